@@ -1,0 +1,62 @@
+// b2analytic: the level solvers (common level and one-sided scale) of METHOD.md.
+#pragma once
+
+#include "b2analytic/ContactResult.h"
+#include "b2analytic/Shape.h"
+
+namespace b2a
+{
+
+/// Common level by Newton–Raphson (paper eqs. 6–17): finds X and μ > 0 with
+///   ∇ψA(X) + μ∇ψB(X) = 0,  ψA(X) − ψB(X) = 0,
+/// where ψ = (λ/λ₀)^{1/q}: each level in units of the shape's own level λ₀, raised to 1/q with
+/// one q for the pair (the smaller LevelPower()). That map is the same for both shapes, so the
+/// solution is the paper's, with better conditioning; the frame is normalised to the pair's
+/// size. μ = e^ν keeps the multiplier positive, and before each step μ is reset to its
+/// least-squares value at the current point when that lowers the residual. The Jacobian is
+/// analytic and solved with Eigen's full-pivot LU; a reciprocal condition number below 1e-14
+/// stops the solve as singular. Steps are limited (trust region of half the pair's size,
+/// |Δν| ≤ 2) and damped by a backtracking line search on the row-weighted residual. Starts from
+/// `warm` when given, else from the point between the centres where ψA = ψB. Both shapes must be
+/// smooth and strictly convex (IsSmoothConvex). No fallback here; `level` is C in own-level units
+/// (C ≤ 1 ⇔ touching; the superellipse family's own level is 1).
+LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                                   const SolverOptions& options = {}, const WarmStart* warm = nullptr);
+
+/// Common level by the min–max characterisation C = min_X max(λA, λB) = max_μ min_X (ψA + μψB)
+/// (Perram–Wertheim): an outer bracketed root in ν = log μ of ψA(X(ν)) − ψB(X(ν)), which is
+/// monotone, around an inner convex minimisation X(ν). Slower than Newton but it converges for
+/// every pair of smooth convex shapes, so it is the fallback; a final Newton polish makes its
+/// answer as exact as Newton's.
+LevelResult SolveCommonLevelMinMax(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                                   const SolverOptions& options = {});
+
+/// Common level by the grid method: the fixed point C = g(C), where g(C) is the smallest level of
+/// A on B's level-C surface (SolveGridScale). g decreases, so the fixed point is bracketed by 1
+/// and g(1) and found by Brent's method. Works for any convex shapes, smooth or not.
+LevelResult SolveCommonLevelGrid(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                                 const SolverOptions& options = {});
+
+/// Common level through the automatic path: Newton (warm-started when `warm` is valid) with the
+/// min–max fallback for smooth convex pairs, the grid fixed point for other convex pairs; fails
+/// with a clear reason for non-convex shapes (use SolveScaleA). Updates `warm` on success.
+LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                             MethodChoice method = MethodChoice::automatic, const SolverOptions& options = {},
+                             WarmStart* warm = nullptr);
+
+/// Grid method (paper section 3): B held at its level `levelB` (its own surface level when NaN),
+/// the smallest level of A over B's surface samples, then refined between the neighbouring
+/// samples by a bracketed root of d/dθ λA(X_B(θ)) (or a Brent minimisation where the minimum
+/// sits on a corner), so that the answer is exact to rounding rather than to the sample spacing.
+/// The lowest `gridCandidates` local minima are refined, so that shapes with several local
+/// minima (the heart's cleft) get the global one. `point` lies on B's surface.
+LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                           const SolverOptions& options = {}, double levelB = 0.0 / 0.0);
+
+/// The smallest level of A at which A touches B held at its own surface ("scale_a"): the grid
+/// method (automatic for every pair, or asked for), or Newton on ∇ψA + μ∇ψB = 0, ψB = ψB(own)
+/// for smooth convex pairs. `point` lies on B's surface.
+LevelResult SolveScaleA(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                        MethodChoice method = MethodChoice::automatic, const SolverOptions& options = {});
+
+} // namespace b2a

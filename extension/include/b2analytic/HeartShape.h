@@ -1,0 +1,37 @@
+// b2analytic: the heart-shaped particle of paper eq. 20.
+#pragma once
+
+#include "b2analytic/Shape.h"
+
+namespace b2a
+{
+
+/// Heart particle (x² + y² − α)³ − x² y³ ≤ 0 (paper eq. 20); α > 0 sets its size and plays the
+/// role of the level value. The level at which a body point lies is
+/// α(x) = x² + y² − cbrt(x² y³) = r² − |x|^{2/3} y, and the particle is { α(x) ≤ α }.
+/// The notch at (0, √α) and the tip at (0, −√α) are corners; along the axis x = 0 the level
+/// function is not differentiable in x, and there the reported derivatives drop the singular
+/// |x|^{2/3} terms (∂/∂x = 0, ∂²/∂x² = 2, ∂²/∂x∂y = 0). Not convex: contacts use the grid method.
+class HeartShape final : public Shape
+{
+public:
+	/// Heart of size α; throws InvalidParameter unless α is finite and > 0.
+	explicit HeartShape(double alpha);
+
+	std::string Describe() const override;
+	double Level(Vec2 x) const override;
+	LevelDerivatives Derivatives(Vec2 x) const override;
+	double RadiusAt(Vec2 u, double level) const override;
+
+	/// The size parameter α.
+	double Alpha() const { return m_alpha; }
+
+private:
+	double LengthHint() const override;
+	double m_alpha;
+};
+
+/// Heart of size α.
+std::shared_ptr<HeartShape> MakeHeart(double alpha);
+
+} // namespace b2a

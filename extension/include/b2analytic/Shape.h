@@ -1,0 +1,181 @@
+// b2analytic: the analytic shape interface of the geometry core.
+#pragma once
+
+#include "b2analytic/Math.h"
+
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace b2a
+{
+
+/// Thrown when a shape (or any other input) is made with an invalid parameter.
+/// The message names the field and the value, e.g. "superellipse: field 'n' must be >= 1, got 0.5".
+class InvalidParameter : public std::invalid_argument
+{
+public:
+	/// Build the message "<what>: field '<field>' <rule>, got <value>".
+	InvalidParameter(const std::string& what, const std::string& field, const std::string& rule, double value);
+	/// Build a free-form message (it still names the field).
+	explicit InvalidParameter(const std::string& message);
+	/// The offending field's name.
+	const std::string& Field() const { return m_field; }
+
+private:
+	std::string m_field;
+};
+
+/// The family a shape belongs to. The contact dispatch table is indexed by it, so every
+/// family has its own row and column; user shapes share the `user` family.
+enum class ShapeFamily : int
+{
+	circle = 0,   ///< |x/r|² + |y/r|², closed forms everywhere
+	ellipse,      ///< |x/a|² + |y/b|², closed forms for radius, support, mass
+	superellipse, ///< |x/a|^n + |y/b|^m with any n, m ≥ 1
+	heart,        ///< (x² + y² − α)³ − x² y³ (paper eq. 20)
+	user,         ///< any level function supplied by the user
+	count         ///< number of families
+};
+
+/// Name of a family ("circle", "ellipse", ...).
+const char* FamilyName(ShapeFamily family);
+
+/// Value, gradient and Hessian of a level function at one body point.
+struct LevelDerivatives
+{
+	double value = 0.0; ///< the level λ(x)
+	Vec2 gradient;      ///< ∇λ(x)
+	Sym22 hessian;      ///< ∇²λ(x)
+};
+
+/// Area, centroid and second moments of area of a particle at its own surface level,
+/// in its body frame (multiply by density for mass and rotational inertia).
+struct MassProperties
+{
+	double area = 0.0;          ///< area
+	Vec2 centroid;              ///< centroid in body coordinates
+	double polarMoment = 0.0;   ///< ∫|x − centroid|² dA (polar second moment about the centroid)
+	double Ixx = 0.0;           ///< ∫(y − cy)² dA, about the centroid
+	double Iyy = 0.0;           ///< ∫(x − cx)² dA, about the centroid
+	double Ixy = 0.0;           ///< ∫(x − cx)(y − cy) dA, about the centroid
+};
+
+/// Points on a shape's own surface, computed once per shape and sample count and reused
+/// (they depend on the shape only, not on any pose). Samples are ordered counter-clockwise by
+/// polar angle and spread so that both arc length and turning of the tangent are resolved:
+/// half of the budget follows arc length, half follows curvature (tips of long ellipses
+/// and the heart's cusps get their share).
+struct SurfaceSamples
+{
+	double level = 0.0;         ///< the level the samples lie on (the shape's surface level)
+	std::vector<double> angle;  ///< polar angle of each sample in the body frame, increasing, in [-π, π)
+	std::vector<Vec2> point;    ///< body-frame position of each sample
+	double maxSpacing = 0.0;    ///< largest distance between consecutive samples
+	double maxDeviation = 0.0;  ///< largest measured distance from the true curve to the sample polygon
+
+	/// Number of samples.
+	int Count() const { return int(point.size()); }
+};
+
+/// An analytic particle shape described by a level function λ(x) in its body frame.
+///
+/// The particle is { x : λ(x) ≤ L₀ } where L₀ = SurfaceLevel(); the sets { λ ≤ L } for other
+/// levels L are the particle "rescaled" to level L (paper section 2). Every shape here is
+/// star-shaped with respect to its body origin at every level: along any ray from the origin
+/// λ increases, so each ray crosses each level set once. Shapes are immutable after
+/// construction and may be shared between particles and threads.
+class Shape
+{
+public:
+	virtual ~Shape();
+	Shape(const Shape&) = delete;
+	Shape& operator=(const Shape&) = delete;
+
+	/// The family, which selects the contact solver.
+	ShapeFamily Family() const { return m_family; }
+	/// A readable description with all parameters, e.g. "ellipse(a=2, b=1)".
+	virtual std::string Describe() const = 0;
+
+	/// The level of the particle's own surface (1 for the superellipse family, α for the heart).
+	double SurfaceLevel() const { return m_surfaceLevel; }
+	/// The level at which a body point lies: the smallest L with x in { λ ≤ L }.
+	virtual double Level(Vec2 x) const = 0;
+	/// Level, gradient and Hessian at a body point. Where the level function is not
+	/// differentiable (a superellipse axis with n < 2, the heart's axis of symmetry) the result
+	/// is finite and documented by the shape.
+	virtual LevelDerivatives Derivatives(Vec2 x) const = 0;
+	/// Gradient of the level function at a body point.
+	virtual Vec2 Gradient(Vec2 x) const { return Derivatives(x).gradient; }
+
+	/// Distance from the body origin to the level-L set along the unit body direction u.
+	virtual double RadiusAt(Vec2 u, double level) const;
+	/// Body point on the level-L set at polar angle θ.
+	Vec2 SurfacePoint(double theta, double level) const;
+	/// Body point on the own surface at polar angle θ.
+	Vec2 SurfacePoint(double theta) const { return SurfacePoint(theta, m_surfaceLevel); }
+
+	/// Support point in the body frame: the point of the particle farthest along d
+	/// (for a non-convex shape, the support point of its convex hull). d need not be unit.
+	virtual Vec2 Support(Vec2 d) const;
+	/// Tight world AABB of the particle at a pose: it touches the particle on all four sides.
+	Box ComputeAABB(const Pose& pose) const;
+	/// Largest distance from the body origin to the surface.
+	double BoundingRadius() const { return m_boundingRadius; }
+	/// Area, centroid and second moments at the own surface level.
+	const MassProperties& Mass() const { return m_mass; }
+
+	/// Every level set is convex.
+	bool IsConvex() const { return m_convex; }
+	/// The level function is twice continuously differentiable away from the origin and its
+	/// level sets are strictly convex: the Newton common-level solver applies.
+	bool IsSmoothConvex() const { return m_smoothConvex; }
+	/// An exponent q such that λ^(1/q) is convex and grows about quadratically (q = 1 when λ
+	/// itself is). The Newton solver works on λ^(1/q) for better conditioning; levels it reports
+	/// are in λ's own units.
+	double LevelPower() const { return m_levelPower; }
+
+	/// Polar angles (in [-π, π)) where the surface has corners; quadrature and sampling split there.
+	const std::vector<double>& CornerAngles() const { return m_corners; }
+
+	/// Surface samples at the own level (count ≥ 8), computed on first use and cached.
+	std::shared_ptr<const SurfaceSamples> Samples(int count = kDefaultSampleCount) const;
+	/// The default number of surface samples for the grid method.
+	static constexpr int kDefaultSampleCount = 256;
+
+protected:
+	/// Set the constant properties; derived constructors call Finalize() once they are ready.
+	Shape(ShapeFamily family, double surfaceLevel, bool convex, bool smoothConvex, double levelPower);
+	/// Compute bounding radius and mass properties (virtual functions are usable by now).
+	/// A derived class may pass closed-form values; a negative radius or a null mass means
+	/// "compute numerically".
+	void Finalize(double boundingRadius, const MassProperties* mass);
+	/// Add a corner angle (before Finalize).
+	void AddCorner(double theta);
+	/// A length scale used to bracket radial roots before the bounding radius is known.
+	virtual double LengthHint() const { return 1.0; }
+
+private:
+	ShapeFamily m_family;
+	double m_surfaceLevel;
+	bool m_convex;
+	bool m_smoothConvex;
+	double m_levelPower;
+	double m_boundingRadius = 0.0;
+	MassProperties m_mass;
+	std::vector<double> m_corners;
+
+	mutable std::mutex m_sampleMutex;
+	mutable std::vector<std::pair<int, std::shared_ptr<const SurfaceSamples>>> m_samples;
+};
+
+/// Shared, immutable handle to a shape.
+using ShapePtr = std::shared_ptr<const Shape>;
+
+/// Format a double for messages with full round-trip precision.
+std::string FormatNumber(double value);
+
+} // namespace b2a

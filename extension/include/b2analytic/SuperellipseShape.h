@@ -1,0 +1,74 @@
+// b2analytic: the superellipse family (superellipse, ellipse, circle).
+#pragma once
+
+#include "b2analytic/Shape.h"
+
+namespace b2a
+{
+
+/// Superellipse particle |x/a|^n + |y/b|^m ≤ 1 (paper eq. 2), with any real exponents n, m ≥ 1.
+/// Its level function is f(x) = |x/a|^n + |y/b|^m, so the level-C set is the particle
+/// "rescaled" to C (for n ≠ m the level sets are not similar copies: C is a measure, not a
+/// linear scale). The normalised ζ-form of paper eq. 1, (|x/a|^{2ζ} + |y/b|^{2ζ})^{1/ζ}, is the
+/// same particle with level f^{1/ζ}; make it with FromZeta.
+///
+/// Family: circle when n = m = 2 and a = b, ellipse when n = m = 2, superellipse otherwise.
+/// Closed forms: radius (n = m), support (n = m, or Lagrange root for n ≠ m), area and second
+/// moments (Beta/Gamma functions), bounding radius of ellipses and circles.
+/// Smoothness: n, m ≥ 2 gives strictly convex, twice differentiable level sets (Newton
+/// applies); 1 ≤ n < 2 is convex but has corners or infinite curvature on the axes.
+/// At a point on an axis where an exponent is below 2, the infinite second derivative is
+/// reported as 0 (the Hessian is not used for such shapes).
+class SuperellipseShape final : public Shape
+{
+public:
+	/// Superellipse |x/a|^n + |y/b|^m; throws InvalidParameter for a, b not finite and > 0 or
+	/// n, m not finite and ≥ 1.
+	SuperellipseShape(double a, double b, double n, double m);
+	/// Normalised form (|x/a|^{2ζ} + |y/b|^{2ζ})^{1/ζ} of paper eq. 1, ζ ≥ 1/2.
+	static std::shared_ptr<SuperellipseShape> FromZeta(double a, double b, double zeta);
+
+	std::string Describe() const override;
+	double Level(Vec2 x) const override;
+	LevelDerivatives Derivatives(Vec2 x) const override;
+	Vec2 Gradient(Vec2 x) const override;
+	double RadiusAt(Vec2 u, double level) const override;
+	Vec2 Support(Vec2 d) const override;
+
+	/// Semi-axis along body x.
+	double A() const { return m_a; }
+	/// Semi-axis along body y.
+	double B() const { return m_b; }
+	/// Exponent of |x/a|.
+	double N() const { return m_n; }
+	/// Exponent of |y/b|.
+	double M() const { return m_m; }
+	/// True for the normalised ζ-form (level = f^{1/ζ}).
+	bool IsNormalised() const { return m_zeta > 0.0; }
+	/// ζ of the normalised form (0 when not normalised).
+	double Zeta() const { return m_zeta; }
+
+	/// Closed-form area 4ab Γ(1+1/n)Γ(1+1/m)/Γ(1+1/n+1/m) and second moments.
+	static MassProperties ClosedFormMass(double a, double b, double n, double m);
+
+private:
+	SuperellipseShape(double a, double b, double n, double m, double zeta);
+	double LengthHint() const override { return m_a > m_b ? m_a : m_b; }
+	// |t|^e with an integer fast path; e is m_n or m_m, k the matching integer (or -1).
+	static double PowAbs(double t, double e, int k);
+	// f and its derivatives (raw sum form, before the ζ transform).
+	LevelDerivatives RawDerivatives(Vec2 x) const;
+
+	double m_a, m_b, m_n, m_m;
+	double m_zeta;       // > 0 for the normalised form
+	int m_nInt, m_mInt;  // exponents as small integers, or -1
+};
+
+/// Ellipse x²/a² + y²/b² ≤ 1 (a superellipse with n = m = 2).
+std::shared_ptr<SuperellipseShape> MakeEllipse(double a, double b);
+/// Circle of radius r (an ellipse with a = b = r).
+std::shared_ptr<SuperellipseShape> MakeCircle(double r);
+/// Superellipse |x/a|^n + |y/b|^m ≤ 1.
+std::shared_ptr<SuperellipseShape> MakeSuperellipse(double a, double b, double n, double m);
+
+} // namespace b2a

@@ -1,0 +1,136 @@
+// b2analytic: the min–max (Perram–Wertheim) characterisation of the common level: the fallback.
+#include "b2analytic/CommonLevel.h"
+
+#include "contact/NewtonCore.h"
+#include "numerics/RootFinding.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace b2a
+{
+
+namespace
+{
+// X(ν) = argmin ψA + e^ν ψB by damped Newton from xi (updated in place). Both ψ are convex, so
+// the Newton direction (with a small Levenberg shift when the Hessian is only semi-definite)
+// descends and a backtracking search converges. Returns ψA − ψB at the minimiser.
+double InnerMinimum(const PairFrame& f, double nu, Vec2& xi, int& evaluations)
+{
+	const double mu = std::exp(nu);
+	for (int it = 0; it < 100; ++it)
+	{
+		const GaugeValue A = f.Eval(f.a, xi, true), B = f.Eval(f.b, xi, true);
+		++evaluations;
+		const Vec2 g = A.grad + mu * B.grad;
+		Sym22 H = A.hess + mu * B.hess;
+		const double phi = A.psi + mu * B.psi;
+		const double trace = std::fabs(H.xx) + std::fabs(H.yy);
+		double det = H.xx * H.yy - H.xy * H.xy;
+		double shift = 1e-12 * trace;
+		while (!(det > 1e-14 * trace * trace && H.xx > 0.0 && H.yy > 0.0) && shift < 1e300)
+		{
+			H.xx += shift;
+			H.yy += shift;
+			det = H.xx * H.yy - H.xy * H.xy;
+			shift *= 10.0;
+		}
+		Vec2 step(-(H.yy * g.x - H.xy * g.y) / det, -(H.xx * g.y - H.xy * g.x) / det);
+		const double len = std::max(std::fabs(step.x), std::fabs(step.y));
+		if (!(len > 0.0) || !std::isfinite(len))
+			break;
+		if (len > 0.5)
+			step = (0.5 / len) * step;
+		const double slope = Dot(g, step);
+		double alpha = 1.0;
+		bool accepted = false;
+		for (int k = 0; k < 50; ++k, alpha *= 0.5)
+		{
+			const Vec2 trial = xi + alpha * step;
+			const double value = f.Psi(f.a, trial) + mu * f.Psi(f.b, trial);
+			if (value <= phi + 1e-4 * alpha * slope)
+			{
+				xi = trial;
+				accepted = true;
+				break;
+			}
+		}
+		if (!accepted || alpha * len < 1e-15)
+			break;
+	}
+	return f.Psi(f.a, xi) - f.Psi(f.b, xi);
+}
+} // namespace
+
+LevelResult SolveCommonLevelMinMax(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)
+{
+	LevelResult result;
+	result.method = SolveMethod::minMax;
+	if (!a.IsSmoothConvex() || !b.IsSmoothConvex())
+	{
+		result.failure = "the min-max solver needs smooth, strictly convex shapes";
+		return result;
+	}
+	const PairFrame f(a, pa, b, pb);
+	Vec2 xi0;
+	double mu0 = 1.0;
+	if (!GeometricStart(f, xi0, mu0))
+	{
+		result.failure = "coincident centres: no common-level point between them";
+		return result;
+	}
+	int evaluations = 0;
+	// g(ν) = ψA(X(ν)) − ψB(X(ν)) increases with ν: weight on B pulls X towards B's centre.
+	Vec2 xiLo = xi0, xiHi = xi0;
+	double lo = std::log(mu0), hi = lo;
+	double glo = InnerMinimum(f, lo, xiLo, evaluations), ghi = glo;
+	xiHi = xiLo;
+	double step = 1.0;
+	for (int k = 0; k < 80 && glo > 0.0; ++k, step *= 2.0)
+	{
+		hi = lo; ghi = glo; xiHi = xiLo;
+		lo -= step;
+		glo = InnerMinimum(f, lo, xiLo, evaluations);
+	}
+	step = 1.0;
+	for (int k = 0; k < 80 && ghi < 0.0; ++k, step *= 2.0)
+	{
+		lo = hi; glo = ghi; xiLo = xiHi;
+		hi += step;
+		ghi = InnerMinimum(f, hi, xiHi, evaluations);
+	}
+	if (!(glo <= 0.0 && ghi >= 0.0))
+	{
+		result.failure = "min-max: the multiplier could not be bracketed";
+		result.iterations = evaluations;
+		return result;
+	}
+	Vec2 xi = 0.5 * (xiLo + xiHi);
+	auto g = [&](double nu) { return InnerMinimum(f, nu, xi, evaluations); };
+	const ScalarResult root = FindRootBrent(g, lo, hi, glo, ghi, 1e-15, 200);
+	g(root.x); // leave xi at the minimiser of the final ν
+	result.iterations = root.iterations;
+
+	// Polish with Newton from the min–max answer: it is inside Newton's basin now.
+	LevelResult polished = RunNewton(f, NewtonMode::common, xi, root.x, options);
+	if (polished.Ok() && Length(f.Xi(polished.point) - xi) < 1e-3)
+	{
+		polished.method = SolveMethod::minMax;
+		polished.iterations += result.iterations;
+		return polished;
+	}
+	const GaugeValue A = f.Eval(f.a, xi, false);
+	if (!A.finite)
+	{
+		result.failure = "min-max: non-finite level at the answer";
+		return result;
+	}
+	result.status = SolveStatus::converged;
+	result.level = A.lambda;
+	result.point = f.World(xi);
+	result.normal = Normalize(A.grad);
+	result.multiplier = std::exp(root.x);
+	return result;
+}
+
+} // namespace b2a

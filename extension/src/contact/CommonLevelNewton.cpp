@@ -1,0 +1,212 @@
+// b2analytic: Newton–Raphson on the common level (paper eqs. 6–17), with step control.
+#include "b2analytic/CommonLevel.h"
+
+#include "contact/NewtonCore.h"
+#include "numerics/RootFinding.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace b2a
+{
+
+namespace
+{
+struct NewtonPoint
+{
+	Vec2 xi;
+	double m = 0.0;
+	GaugeValue A, B;
+	Eigen::Vector3d r;
+	double relative = 0.0; // residual relative to the size of its terms
+	bool finite = false;
+};
+
+NewtonPoint Evaluate(const PairFrame& f, NewtonMode mode, double psiB0, Vec2 xi, double m)
+{
+	NewtonPoint p;
+	p.xi = xi;
+	p.m = m;
+	p.A = f.Eval(f.a, xi, true);
+	p.B = f.Eval(f.b, xi, true);
+	const double mu = mode == NewtonMode::common ? std::exp(m) : m;
+	const Vec2 r12 = p.A.grad + mu * p.B.grad;
+	const double r3 = mode == NewtonMode::common ? p.A.psi - p.B.psi : p.B.psi - psiB0;
+	p.r = Eigen::Vector3d(r12.x, r12.y, r3);
+	const double gradScale = LengthSquared(p.A.grad) + mu * mu * LengthSquared(p.B.grad) + 1e-300;
+	const double levelScale = p.A.psi * p.A.psi + p.B.psi * p.B.psi + 1e-300;
+	p.relative = std::sqrt(LengthSquared(r12) / gradScale + r3 * r3 / levelScale);
+	p.finite = p.A.finite && p.B.finite && std::isfinite(mu) && std::isfinite(p.relative);
+	return p;
+}
+} // namespace
+
+LevelResult RunNewton(const PairFrame& f, NewtonMode mode, Vec2 xi, double m, const SolverOptions& options)
+{
+	LevelResult result;
+	result.method = SolveMethod::newton;
+	const double psiB0 = f.PsiOfLevel(1.0); // B's own surface, in its level units
+	NewtonPoint p = Evaluate(f, mode, psiB0, xi, m);
+	const int cap = std::max(1, options.maxIterations);
+	for (int it = 1; it <= cap; ++it)
+	{
+		result.iterations = it;
+		if (!p.finite)
+		{
+			result.failure = "non-finite level value or derivative during Newton iteration";
+			return result;
+		}
+		// Least-squares multiplier for the current point, μ = −∇ψA·∇ψB / |∇ψB|²: the multiplier
+		// is only as good as the point it was found at, and a stale one makes Newton crawl.
+		{
+			const double gb2 = LengthSquared(p.B.grad);
+			const double muLs = gb2 > 0.0 ? -Dot(p.A.grad, p.B.grad) / gb2 : 0.0;
+			const double mLs = mode == NewtonMode::common ? (muLs > 0.0 ? std::log(muLs) : p.m) : muLs;
+			if (mLs != p.m && std::isfinite(mLs))
+			{
+				const NewtonPoint q = Evaluate(f, mode, psiB0, p.xi, mLs);
+				if (q.finite && q.relative < p.relative)
+					p = q;
+			}
+		}
+		const double mu = mode == NewtonMode::common ? std::exp(p.m) : p.m;
+		// Jacobian of (∇ψA + μ∇ψB, third equation) with respect to (ξ, m).
+		Eigen::Matrix3d J;
+		const Sym22 H = p.A.hess + mu * p.B.hess;
+		const Vec2 dmu = mode == NewtonMode::common ? mu * p.B.grad : p.B.grad;
+		const Vec2 row3 = mode == NewtonMode::common ? p.A.grad - p.B.grad : p.B.grad;
+		J << H.xx, H.xy, dmu.x,
+		     H.xy, H.yy, dmu.y,
+		     row3.x, row3.y, 0.0;
+		const Eigen::FullPivLU<Eigen::Matrix3d> lu(J);
+		if (!(lu.rcond() > 1e-14))
+		{
+			if (p.relative < 1e-11)
+				break; // already solved: the Jacobian is singular only at the answer's rounding level
+			result.failure = "singular or ill-conditioned Jacobian";
+			return result;
+		}
+		Eigen::Vector3d delta = lu.solve(-p.r);
+		// Trust region: at most half the pair's size in ξ, and a factor e² in μ.
+		double limit = 1.0;
+		const double stepXi = std::max(std::fabs(delta[0]), std::fabs(delta[1]));
+		if (stepXi > 0.5) limit = std::min(limit, 0.5 / stepXi);
+		const double mLimit = mode == NewtonMode::common ? 2.0 : 2.0 * std::max(1.0, std::fabs(p.m));
+		if (std::fabs(delta[2]) > mLimit) limit = std::min(limit, mLimit / std::fabs(delta[2]));
+		delta *= limit;
+		// Backtracking line search on the residual with row weights frozen at the current point
+		// (for any fixed positive weights the Newton direction descends).
+		const double w12 = 1.0 / (LengthSquared(p.A.grad) + mu * mu * LengthSquared(p.B.grad) + 1e-300);
+		const double w3 = 1.0 / (p.A.psi * p.A.psi + p.B.psi * p.B.psi + 1e-300);
+		auto merit = [&](const NewtonPoint& q) { return w12 * (q.r[0] * q.r[0] + q.r[1] * q.r[1]) + w3 * q.r[2] * q.r[2]; };
+		const double merit0 = merit(p);
+		double alpha = 1.0;
+		NewtonPoint next;
+		bool accepted = false;
+		for (int k = 0; k < 40; ++k, alpha *= 0.5)
+		{
+			next = Evaluate(f, mode, psiB0, p.xi + alpha * Vec2(delta[0], delta[1]), p.m + alpha * delta[2]);
+			if (next.finite && merit(next) <= (1.0 - 1e-4 * alpha) * merit0)
+			{
+				accepted = true;
+				break;
+			}
+		}
+		if (!accepted)
+		{
+			if (p.relative < 1e-9)
+				break; // rounding floor: no step can lower the residual any more
+			result.failure = "line search stalled (no step lowers the residual)";
+			return result;
+		}
+		const double moved = alpha * std::max(std::fabs(delta[0]), std::fabs(delta[1]));
+		p = next;
+		if ((limit == 1.0 && alpha == 1.0 && moved <= options.stepTolerance) || p.relative < 1e-15)
+			break;
+		if (it == cap)
+		{
+			result.failure = "iteration cap reached";
+			return result;
+		}
+	}
+	result.status = SolveStatus::converged;
+	result.failure = "";
+	// Common levels are reported relative to the own levels (C ≤ 1 ⇔ touching); the one-sided
+	// scale is A's level in A's own units, as the grid method reports it.
+	result.level = mode == NewtonMode::common ? p.A.lambda : p.A.lambda / PairFrame::LevelUnit(f.a);
+	result.point = f.World(p.xi);
+	result.normal = Normalize(p.A.grad);
+	result.multiplier = mode == NewtonMode::common ? std::exp(p.m) : p.m;
+	return result;
+}
+
+bool GeometricStart(const PairFrame& f, Vec2& xi, double& mu)
+{
+	const Vec2 ca = f.Xi(f.a.pose.p), cb = f.Xi(f.b.pose.p);
+	if (!(Length(cb - ca) > 1e-12))
+		return false;
+	// ψA − ψB goes from −ψB(cA) < 0 to ψA(cB) > 0 along the segment: one root.
+	auto phi = [&](double t) {
+		const Vec2 x = ca + t * (cb - ca);
+		return f.Psi(f.a, x) - f.Psi(f.b, x);
+	};
+	const ScalarResult r = FindRootBrent(phi, 0.0, 1.0, phi(0.0), phi(1.0), 1e-10, 100);
+	xi = ca + r.x * (cb - ca);
+	const double ga = Length(f.Eval(f.a, xi, false).grad), gb = Length(f.Eval(f.b, xi, false).grad);
+	mu = (ga > 0.0 && gb > 0.0 && std::isfinite(ga / gb)) ? ga / gb : 1.0;
+	return true;
+}
+
+LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                                   const SolverOptions& options, const WarmStart* warm)
+{
+	LevelResult result;
+	result.method = SolveMethod::newton;
+	if (!a.IsSmoothConvex() || !b.IsSmoothConvex())
+	{
+		result.failure = "Newton needs smooth, strictly convex shapes (superellipse exponents >= 2)";
+		return result;
+	}
+	const PairFrame f(a, pa, b, pb);
+	Vec2 xi;
+	double mu = 1.0;
+	if (warm && warm->valid && warm->multiplier > 0.0 && IsFinite(warm->localPoint))
+	{
+		xi = f.Xi(ToWorld(pa, warm->localPoint));
+		mu = warm->multiplier;
+	}
+	else if (!GeometricStart(f, xi, mu))
+	{
+		result.failure = "coincident centres: no common-level point between them";
+		return result;
+	}
+	return RunNewton(f, NewtonMode::common, xi, std::log(mu), options);
+}
+
+LevelResult SolveScaleANewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)
+{
+	LevelResult result;
+	result.method = SolveMethod::newton;
+	if (!a.IsSmoothConvex() || !b.IsSmoothConvex())
+	{
+		result.failure = "Newton needs smooth, strictly convex shapes (superellipse exponents >= 2)";
+		return result;
+	}
+	const PairFrame f(a, pa, b, pb);
+	// Start on B's surface on the ray from B's centre towards A's centre; the multiplier is
+	// negative when A's centre is inside B (the tangency is then internal).
+	const Vec2 towardsA = ToBody(pb, pa.p);
+	const double theta = LengthSquared(towardsA) > 0.0 ? std::atan2(towardsA.y, towardsA.x) : 0.0;
+	const Vec2 xi = f.Xi(ToWorld(pb, b.SurfacePoint(theta)));
+	const double ga = Length(f.Eval(f.a, xi, false).grad), gb = Length(f.Eval(f.b, xi, false).grad);
+	double mu = (ga > 0.0 && gb > 0.0) ? ga / gb : 1.0;
+	if (b.Level(towardsA) < b.SurfaceLevel())
+		mu = -mu;
+	LevelResult r = RunNewton(f, NewtonMode::oneSided, xi, mu, options);
+	return r;
+}
+
+} // namespace b2a
+

@@ -1,0 +1,129 @@
+// b2analytic: choosing a level solver, and the names of statuses and methods.
+#include "b2analytic/CommonLevel.h"
+
+#include <cmath>
+
+namespace b2a
+{
+
+LevelResult SolveScaleANewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options);
+
+const char* StatusName(SolveStatus status)
+{
+	switch (status)
+	{
+	case SolveStatus::converged: return "converged";
+	case SolveStatus::convergedAfterFallback: return "converged_after_fallback";
+	default: return "failed";
+	}
+}
+
+const char* MethodName(SolveMethod method)
+{
+	switch (method)
+	{
+	case SolveMethod::closedForm: return "closed_form";
+	case SolveMethod::newton: return "newton";
+	case SolveMethod::minMax: return "min_max";
+	case SolveMethod::grid: return "grid";
+	case SolveMethod::overlapAxis: return "overlap_axis";
+	default: return "none";
+	}
+}
+
+namespace
+{
+// Two circles: the common level point divides the centre segment in the ratio of the radii,
+// X = cA + rA/(rA + rB)·(cB − cA), and C = (d / (rA + rB))².
+LevelResult CircleLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb)
+{
+	LevelResult r;
+	r.method = SolveMethod::closedForm;
+	const double ra = a.BoundingRadius(), rb = b.BoundingRadius();
+	const Vec2 d = pb.p - pa.p;
+	const double dist = Length(d);
+	if (!(dist > 0.0))
+	{
+		r.failure = "coincident centres: no common-level point between them";
+		return r;
+	}
+	r.status = SolveStatus::converged;
+	r.point = pa.p + (ra / (ra + rb)) * d;
+	r.normal = d / dist;
+	const double s = dist / (ra + rb);
+	r.level = s * s;
+	r.multiplier = rb / ra; // |∇F_A| = 2s/rA, |∇F_B| = 2s/rB at the point, and ∇F_A + μ∇F_B = 0
+	return r;
+}
+} // namespace
+
+LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
+                             const SolverOptions& options, WarmStart* warm)
+{
+	LevelResult r;
+	const bool smooth = a.IsSmoothConvex() && b.IsSmoothConvex();
+	const bool convex = a.IsConvex() && b.IsConvex();
+	switch (method)
+	{
+	case MethodChoice::newton:
+		r = SolveCommonLevelNewton(a, pa, b, pb, options, warm);
+		break;
+	case MethodChoice::grid:
+		if (!convex)
+		{
+			r.method = SolveMethod::grid;
+			r.failure = "the common level needs convex shapes; use the one-sided scale (scale_a) for non-convex ones";
+			return r;
+		}
+		r = SolveCommonLevelGrid(a, pa, b, pb, options);
+		break;
+	default:
+		if (a.Family() == ShapeFamily::circle && b.Family() == ShapeFamily::circle)
+		{
+			r = CircleLevel(a, pa, b, pb);
+		}
+		else if (smooth)
+		{
+			r = SolveCommonLevelNewton(a, pa, b, pb, options, warm);
+			if (!r.Ok() && warm && warm->valid)
+				r = SolveCommonLevelNewton(a, pa, b, pb, options, nullptr);
+			if (!r.Ok())
+			{
+				const int spent = r.iterations;
+				r = SolveCommonLevelMinMax(a, pa, b, pb, options);
+				r.iterations += spent;
+				if (r.Ok())
+					r.status = SolveStatus::convergedAfterFallback;
+			}
+		}
+		else if (convex)
+		{
+			r = SolveCommonLevelGrid(a, pa, b, pb, options);
+		}
+		else
+		{
+			r.failure = "the common level needs convex shapes; use the one-sided scale (scale_a) for non-convex ones";
+			return r;
+		}
+	}
+	if (warm)
+	{
+		warm->valid = r.Ok() && r.multiplier > 0.0;
+		if (warm->valid)
+		{
+			warm->localPoint = ToBody(pa, r.point);
+			warm->multiplier = r.multiplier;
+		}
+	}
+	return r;
+}
+
+LevelResult SolveScaleA(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
+                        const SolverOptions& options)
+{
+	if (method == MethodChoice::newton)
+		return SolveScaleANewton(a, pa, b, pb, options);
+	return SolveGridScale(a, pa, b, pb, options);
+}
+
+} // namespace b2a

@@ -1,0 +1,185 @@
+// b2analytic: time of impact by conservative advancement and a bracketed root.
+#include "b2analytic/TimeOfImpact.h"
+
+#include "numerics/RootFinding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace b2a
+{
+
+namespace
+{
+double SegmentDistance(Vec2 p, Vec2 a, Vec2 b)
+{
+	const Vec2 ab = b - a;
+	const double len2 = LengthSquared(ab);
+	double t = len2 > 0.0 ? Dot(p - a, ab) / len2 : 0.0;
+	t = std::min(1.0, std::max(0.0, t));
+	return Distance(p, a + t * ab);
+}
+
+// Distance between two closed polylines (segments do not cross: that case returns 0).
+double PolylineDistance(const std::vector<Vec2>& p, const std::vector<Vec2>& q)
+{
+	double best = std::numeric_limits<double>::infinity();
+	const int n = int(p.size()), m = int(q.size());
+	for (int i = 0; i < n; ++i)
+	{
+		const Vec2 a0 = p[i], a1 = p[(i + 1) % n];
+		for (int j = 0; j < m; ++j)
+		{
+			const Vec2 b0 = q[j], b1 = q[(j + 1) % m];
+			// Proper crossing: opposite orientations on both segments.
+			const double d1 = Cross(a1 - a0, b0 - a0), d2 = Cross(a1 - a0, b1 - a0);
+			const double d3 = Cross(b1 - b0, a0 - b0), d4 = Cross(b1 - b0, a1 - b0);
+			if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)))
+				return 0.0;
+			best = std::min({best, SegmentDistance(a0, b0, b1), SegmentDistance(a1, b0, b1), SegmentDistance(b0, a0, a1),
+			                 SegmentDistance(b1, a0, a1)});
+		}
+	}
+	return best;
+}
+
+std::vector<Vec2> WorldSamples(const Shape& s, const Pose& pose, int count)
+{
+	const auto samples = s.Samples(count);
+	std::vector<Vec2> out;
+	out.reserve(samples->point.size());
+	for (Vec2 p : samples->point)
+		out.push_back(ToWorld(pose, p));
+	return out;
+}
+
+Vec2 WorldSupport(const Shape& shape, const Pose& pose, Vec2 d)
+{
+	return ToWorld(pose, shape.Support(InvRotate(pose.q, d)));
+}
+} // namespace
+
+TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb, double tMax,
+                                const TimeOfImpactOptions& options)
+{
+	TimeOfImpactResult out;
+	if (!std::isfinite(tMax) || !(tMax >= 0.0))
+	{
+		out.failure = "tMax must be finite and >= 0";
+		return out;
+	}
+	if (!IsFinite(ma.pose.p) || !IsFinite(mb.pose.p) || !IsFinite(ma.velocity) || !IsFinite(mb.velocity) ||
+	    !std::isfinite(ma.angularVelocity) || !std::isfinite(mb.angularVelocity))
+	{
+		out.failure = "motions must be finite";
+		return out;
+	}
+	const double RA = a.BoundingRadius(), RB = b.BoundingRadius();
+	const double size = 0.5 * (RA + RB);
+	// No point of A moves faster than |vA| + |ωA|·RA relative to the world, so the distance
+	// between the particles shrinks at most at this rate.
+	const double rate = Length(mb.velocity - ma.velocity) + std::fabs(ma.angularVelocity) * RA + std::fabs(mb.angularVelocity) * RB;
+	const bool convex = a.IsConvex() && b.IsConvex();
+	const double switchGap = 1e-3 * size;  // below this, look for a sign change to bracket
+	const double touchGap = 1e-12 * size;  // a lower bound this small is contact (grazing)
+
+	auto contactAt = [&](double t) { return ComputeContact(a, ma.At(t), b, mb.At(t), MethodChoice::automatic, options.solver); };
+	auto lowerBound = [&](double t, const ContactResult& c) {
+		const Pose pa = ma.At(t), pb = mb.At(t);
+		double lb = Distance(pa.p, pb.p) - RA - RB;
+		const Vec2 n = c.normal;
+		lb = std::max(lb, Dot(WorldSupport(b, pb, -n), n) - Dot(WorldSupport(a, pa, n), n));
+		if (!convex && lb <= switchGap)
+		{
+			const int count = options.solver.gridSamples;
+			const double poly = PolylineDistance(WorldSamples(a, pa, count), WorldSamples(b, pb, count));
+			lb = std::max(lb, poly - a.Samples(count)->maxDeviation - b.Samples(count)->maxDeviation);
+		}
+		return lb;
+	};
+
+	double t = 0.0;
+	ContactResult c = contactAt(t);
+	for (int it = 0; it < options.maxIterations; ++it)
+	{
+		out.iterations = it + 1;
+		if (!c.Ok())
+		{
+			out.failure = c.failure;
+			return out;
+		}
+		if (c.touching)
+		{
+			out.status = SolveStatus::converged;
+			out.hit = true;
+			out.time = t;
+			out.contact = c;
+			return out;
+		}
+		const double lb = lowerBound(t, c);
+		if (!(rate > 0.0))
+			break; // nothing moves relative to the other
+		if (lb <= touchGap)
+		{
+			out.status = SolveStatus::converged;
+			out.hit = true;
+			out.time = t;
+			out.contact = c;
+			return out;
+		}
+		if (lb <= switchGap)
+		{
+			// Close: estimate when the separation reaches zero from its rate of change, and if a
+			// sign change is found there, finish with Brent's method on the separation.
+			const double dt = std::max(1e-9 * tMax, c.separation / rate);
+			const double slope = (contactAt(std::min(tMax, t + dt)).separation - c.separation) / dt;
+			if (slope < 0.0)
+			{
+				const double guess = t + c.separation / -slope;
+				const double hi = std::min(tMax, t + 1.5 * (guess - t) + lb / rate);
+				const ContactResult chi = contactAt(hi);
+				if (chi.Ok() && chi.touching)
+				{
+					auto sep = [&](double s) {
+						const ContactResult cs = contactAt(s);
+						return cs.touching ? std::min(cs.separation, 0.0) : cs.separation;
+					};
+					const ScalarResult root = FindRootBrent(sep, t, hi, c.separation, std::min(chi.separation, 0.0),
+					                                        options.timeTolerance * std::max(tMax, 1e-300), 200);
+					out.iterations += root.iterations;
+					out.status = SolveStatus::converged;
+					out.hit = true;
+					// The root's bracket ends on the touching side, so the contact reported touches.
+					double tr = root.x;
+					ContactResult cr = contactAt(tr);
+					if (!cr.touching)
+					{
+						tr = std::min(hi, tr + options.timeTolerance * std::max(tMax, 1e-300));
+						cr = contactAt(tr);
+					}
+					out.time = tr;
+					out.contact = cr;
+					return out;
+				}
+			}
+		}
+		const double next = t + lb / rate;
+		if (next > tMax)
+			break;
+		t = next;
+		c = contactAt(t);
+	}
+	if (out.iterations >= options.maxIterations)
+	{
+		out.failure = "conservative advancement reached its step cap";
+		return out;
+	}
+	out.status = SolveStatus::converged;
+	out.hit = false;
+	out.time = tMax;
+	out.contact = contactAt(tMax);
+	return out;
+}
+
+} // namespace b2a

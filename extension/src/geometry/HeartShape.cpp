@@ -1,0 +1,91 @@
+// b2analytic: heart-shaped particle.
+#include "b2analytic/HeartShape.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace b2a
+{
+
+HeartShape::HeartShape(double alpha) : Shape(ShapeFamily::heart, alpha, false, false, 1.0), m_alpha(alpha)
+{
+	if (!std::isfinite(alpha) || !(alpha > 0.0))
+		throw InvalidParameter("heart", "alpha", "must be finite and > 0", alpha);
+	AddCorner(0.5 * kPi);  // notch
+	AddCorner(-0.5 * kPi); // tip
+	Finalize(-1.0, nullptr);
+}
+
+std::string HeartShape::Describe() const
+{
+	return "heart(alpha=" + FormatNumber(m_alpha) + ")";
+}
+
+double HeartShape::LengthHint() const
+{
+	return 1.5 * std::sqrt(m_alpha);
+}
+
+double HeartShape::Level(Vec2 x) const
+{
+	// (r² − α)³ = x² y³  ⇔  α = r² − cbrt(x² y³), and (r² − α)³ is decreasing in α.
+	return x.x * x.x + x.y * x.y - std::cbrt(x.x * x.x) * x.y;
+}
+
+LevelDerivatives HeartShape::Derivatives(Vec2 x) const
+{
+	// α(x, y) = x² + y² − |x|^{2/3} y:
+	//   ∂x = 2x − (2/3) sgn(x) |x|^{−1/3} y,   ∂y = 2y − |x|^{2/3},
+	//   ∂xx = 2 + (2/9) |x|^{−4/3} y,  ∂xy = −(2/3) sgn(x) |x|^{−1/3},  ∂yy = 2.
+	LevelDerivatives d;
+	const double ax = std::fabs(x.x);
+	const double c = std::cbrt(ax); // |x|^{1/3}
+	d.value = x.x * x.x + x.y * x.y - c * c * x.y;
+	d.hessian.yy = 2.0;
+	d.gradient.y = 2.0 * x.y - c * c;
+	if (ax == 0.0)
+	{
+		d.gradient.x = 0.0;
+		d.hessian.xx = 2.0;
+		d.hessian.xy = 0.0;
+		return d;
+	}
+	const double sgn = x.x > 0.0 ? 1.0 : -1.0;
+	d.gradient.x = 2.0 * x.x - (2.0 / 3.0) * sgn / c * x.y;
+	d.hessian.xx = 2.0 + (2.0 / 9.0) * x.y / (c * ax);
+	d.hessian.xy = -(2.0 / 3.0) * sgn / c;
+	return d;
+}
+
+double HeartShape::RadiusAt(Vec2 u, double level) const
+{
+	// Along x = t·u: α(x) = t² − k t^{5/3} with k = cbrt(ux² uy³). With s = t^{1/3}:
+	//   h(s) = s⁶ − k s⁵ − L = 0,  h'(s) = 6s⁵ − 5k s⁴.
+	// h(0) = −L < 0 and h has one positive root; h is convex right of it (h'' = s³(30s − 20k) > 0
+	// for s > 2k/3, and the root exceeds 5k/6). Starting at s = max(k, 0) + L^{1/6}, where h ≥ 0,
+	// Newton descends monotonically onto the root.
+	if (!(level > 0.0))
+		return 0.0;
+	const double k = std::cbrt(u.x * u.x * u.y * u.y * u.y);
+	double s = std::max(k, 0.0) + std::pow(level, 1.0 / 6.0);
+	for (int it = 0; it < 100; ++it)
+	{
+		const double s4 = (s * s) * (s * s);
+		const double h = s4 * s * (s - k) - level;
+		const double dh = s4 * (6.0 * s - 5.0 * k);
+		const double step = h / dh;
+		if (!(step > 0.0))
+			break; // monotone descent has reached rounding level
+		s -= step;
+		if (step <= 1e-16 * s)
+			break;
+	}
+	return s * s * s;
+}
+
+std::shared_ptr<HeartShape> MakeHeart(double alpha)
+{
+	return std::make_shared<HeartShape>(alpha);
+}
+
+} // namespace b2a

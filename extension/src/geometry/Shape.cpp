@@ -1,0 +1,354 @@
+// b2analytic: what every shape shares: radial roots, support, AABB, samples, mass by quadrature.
+#include "b2analytic/Shape.h"
+
+#include "numerics/Quadrature.h"
+#include "numerics/RootFinding.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+namespace b2a
+{
+
+InvalidParameter::InvalidParameter(const std::string& what, const std::string& field, const std::string& rule, double value)
+	: std::invalid_argument(what + ": field '" + field + "' " + rule + ", got " + FormatNumber(value)), m_field(field)
+{
+}
+
+InvalidParameter::InvalidParameter(const std::string& message) : std::invalid_argument(message) {}
+
+std::string FormatNumber(double value)
+{
+	char buffer[64];
+	std::snprintf(buffer, sizeof(buffer), "%.17g", value);
+	return buffer;
+}
+
+const char* FamilyName(ShapeFamily family)
+{
+	switch (family)
+	{
+	case ShapeFamily::circle: return "circle";
+	case ShapeFamily::ellipse: return "ellipse";
+	case ShapeFamily::superellipse: return "superellipse";
+	case ShapeFamily::heart: return "heart";
+	case ShapeFamily::user: return "user";
+	default: return "unknown";
+	}
+}
+
+Shape::Shape(ShapeFamily family, double surfaceLevel, bool convex, bool smoothConvex, double levelPower)
+	: m_family(family), m_surfaceLevel(surfaceLevel), m_convex(convex), m_smoothConvex(smoothConvex), m_levelPower(levelPower)
+{
+}
+
+Shape::~Shape() = default;
+
+void Shape::AddCorner(double theta)
+{
+	m_corners.push_back(theta);
+	std::sort(m_corners.begin(), m_corners.end());
+}
+
+double Shape::RadiusAt(Vec2 u, double level) const
+{
+	// Generic radial root of λ(t·u) = level. λ increases along the ray (star-shaped), so
+	// bracket [lo, hi] by doubling from a length scale and finish with Brent's method.
+	auto phi = [&](double t) { return Level(t * u) - level; };
+	const double f0 = phi(0.0);
+	if (!(f0 < 0.0))
+		return 0.0; // the level set does not contain the origin: empty along every ray
+	double lo = 0.0, flo = f0;
+	double hi = m_boundingRadius > 0.0 ? m_boundingRadius : LengthHint();
+	double fhi = phi(hi);
+	for (int i = 0; i < 2000 && !(fhi >= 0.0); ++i)
+	{
+		if (!std::isfinite(fhi) && !std::isnan(fhi))
+			break; // +inf: outside for sure
+		if (std::isnan(fhi))
+			return std::numeric_limits<double>::quiet_NaN();
+		lo = hi;
+		flo = fhi;
+		hi *= 2.0;
+		fhi = phi(hi);
+	}
+	if (!(fhi >= 0.0))
+		return std::numeric_limits<double>::quiet_NaN();
+	if (!std::isfinite(fhi))
+	{
+		// Bisect on the sign until the upper end is finite, so Brent gets a finite bracket.
+		for (int i = 0; i < 200 && !std::isfinite(fhi); ++i)
+		{
+			const double mid = 0.5 * (lo + hi);
+			const double fm = phi(mid);
+			if (fm < 0.0) { lo = mid; flo = fm; }
+			else { hi = mid; fhi = fm; }
+		}
+	}
+	const ScalarResult r = FindRootBrent(phi, lo, hi, flo, fhi, 0.0, 300);
+	return r.x;
+}
+
+Vec2 Shape::SurfacePoint(double theta, double level) const
+{
+	const Vec2 u(std::cos(theta), std::sin(theta));
+	return RadiusAt(u, level) * u;
+}
+
+Vec2 Shape::Support(Vec2 d) const
+{
+	// Support of the convex hull: the sample farthest along d, then a 1D refinement of
+	// d·X(θ) between its neighbours. The value is exact to rounding; the point to about √eps.
+	const auto samples = Samples();
+	const int n = samples->Count();
+	int best = 0;
+	double bestValue = -std::numeric_limits<double>::infinity();
+	for (int i = 0; i < n; ++i)
+	{
+		const double v = Dot(d, samples->point[i]);
+		if (v > bestValue) { bestValue = v; best = i; }
+	}
+	double lo = samples->angle[(best + n - 1) % n];
+	double hi = samples->angle[(best + 1) % n];
+	const double mid = samples->angle[best];
+	if (lo > mid) lo -= 2.0 * kPi;
+	if (hi < mid) hi += 2.0 * kPi;
+	const double L = m_surfaceLevel;
+	auto negProj = [&](double t) { return -Dot(d, SurfacePoint(t, L)); };
+	const ScalarResult r = MinimizeBrent(negProj, lo, hi, 1e-15, 1e-15, 200);
+	if (-r.fx >= bestValue)
+		return SurfacePoint(r.x, L);
+	return samples->point[best];
+}
+
+Box Shape::ComputeAABB(const Pose& pose) const
+{
+	// World extreme along ±x and ±y = body support along the world axes pulled back.
+	const Vec2 ex = InvRotate(pose.q, Vec2(1.0, 0.0));
+	const Vec2 ey = InvRotate(pose.q, Vec2(0.0, 1.0));
+	Box b;
+	b.upper.x = ToWorld(pose, Support(ex)).x;
+	b.lower.x = ToWorld(pose, Support(-ex)).x;
+	b.upper.y = ToWorld(pose, Support(ey)).y;
+	b.lower.y = ToWorld(pose, Support(-ey)).y;
+	return b;
+}
+
+namespace
+{
+// Angle of the vector b relative to a, in [0, π].
+double TurnAngle(Vec2 a, Vec2 b)
+{
+	return std::fabs(std::atan2(Cross(a, b), Dot(a, b)));
+}
+
+double WrapAngle(double t)
+{
+	while (t >= kPi) t -= 2.0 * kPi;
+	while (t < -kPi) t += 2.0 * kPi;
+	return t;
+}
+
+// Distance from p to the segment [a, b].
+double SegmentDistance(Vec2 p, Vec2 a, Vec2 b)
+{
+	const Vec2 ab = b - a;
+	const double len2 = LengthSquared(ab);
+	double t = len2 > 0.0 ? Dot(p - a, ab) / len2 : 0.0;
+	t = std::min(1.0, std::max(0.0, t));
+	return Distance(p, a + t * ab);
+}
+} // namespace
+
+std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
+{
+	if (count < 8)
+		throw InvalidParameter("surface samples", "count", "must be >= 8", count);
+	std::lock_guard<std::mutex> lock(m_sampleMutex);
+	for (const auto& entry : m_samples)
+		if (entry.first == count)
+			return entry.second;
+
+	const double L = m_surfaceLevel;
+	// 1. Dense adaptive polar sampling: split an angle interval while its chord is long or
+	//    the chord direction turns, so thin tips and cusps are resolved.
+	struct Dense { double theta; Vec2 p; };
+	std::vector<Dense> dense;
+	std::vector<double> start;
+	const int initial = 64;
+	for (int i = 0; i < initial; ++i)
+		start.push_back(-kPi + 2.0 * kPi * i / initial);
+	for (double c : m_corners)
+		start.push_back(WrapAngle(c));
+	std::sort(start.begin(), start.end());
+	start.erase(std::unique(start.begin(), start.end()), start.end());
+
+	double scale = 0.0;
+	std::vector<Vec2> startPoints;
+	for (double t : start)
+	{
+		startPoints.push_back(SurfacePoint(t, L));
+		scale = std::max(scale, Length(startPoints.back()));
+	}
+	const double hMax = scale * 2.0 * kPi / 2048.0;
+	const double turnMax = 2.0 * kPi / 1024.0;
+	struct Task { double t0; Vec2 p0; double t1; Vec2 p1; int depth; };
+	std::vector<Task> stack;
+	for (size_t i = 0; i < start.size(); ++i)
+	{
+		const size_t j = (i + 1) % start.size();
+		const double t1 = j == 0 ? start[0] + 2.0 * kPi : start[j];
+		// Push in reverse order of processing so that output stays ordered by angle.
+		stack.clear();
+		stack.push_back({start[i], startPoints[i], t1, startPoints[j], 0});
+		while (!stack.empty())
+		{
+			const Task task = stack.back();
+			stack.pop_back();
+			const double tm = 0.5 * (task.t0 + task.t1);
+			const Vec2 pm = SurfacePoint(tm, L);
+			const bool longChord = Distance(task.p0, task.p1) > hMax;
+			const bool turning = TurnAngle(pm - task.p0, task.p1 - pm) > turnMax;
+			if ((longChord || turning) && task.depth < 40)
+			{
+				stack.push_back({tm, pm, task.t1, task.p1, task.depth + 1});
+				stack.push_back({task.t0, task.p0, tm, pm, task.depth + 1});
+			}
+			else
+			{
+				dense.push_back({task.t0, task.p0});
+			}
+		}
+	}
+	const int nd = int(dense.size());
+	for (const Dense& d : dense)
+		if (!IsFinite(d.p))
+			throw InvalidParameter(Describe() + ": no finite surface point at polar angle " + FormatNumber(d.theta) +
+			                       " (field 'function' must describe a bounded, star-shaped particle)");
+
+	// 2. Equidistribute the combined measure: half arc length, half turning.
+	std::vector<double> len(nd), turn(nd);
+	double perimeter = 0.0, totalTurn = 0.0;
+	for (int i = 0; i < nd; ++i)
+	{
+		len[i] = Distance(dense[i].p, dense[(i + 1) % nd].p);
+		perimeter += len[i];
+	}
+	for (int i = 0; i < nd; ++i)
+	{
+		const Vec2 in = dense[i].p - dense[(i + nd - 1) % nd].p;
+		const Vec2 out = dense[(i + 1) % nd].p - dense[i].p;
+		turn[i] = TurnAngle(in, out);
+		totalTurn += turn[i];
+	}
+	std::vector<double> weight(nd), cumulative(nd + 1, 0.0);
+	for (int i = 0; i < nd; ++i)
+	{
+		weight[i] = len[i] / perimeter + 0.5 * (turn[i] + turn[(i + 1) % nd]) / totalTurn;
+		cumulative[i + 1] = cumulative[i] + weight[i];
+	}
+	auto out = std::make_shared<SurfaceSamples>();
+	out->level = L;
+	int seg = 0;
+	for (int k = 0; k < count; ++k)
+	{
+		const double target = (k + 0.5) / count * cumulative[nd];
+		while (seg + 1 < nd && cumulative[seg + 1] < target) ++seg;
+		const double frac = weight[seg] > 0.0 ? (target - cumulative[seg]) / weight[seg] : 0.0;
+		const double t0 = dense[seg].theta;
+		double t1 = dense[(seg + 1) % nd].theta;
+		if (t1 <= t0) t1 += 2.0 * kPi;
+		out->angle.push_back(WrapAngle(t0 + frac * (t1 - t0)));
+	}
+	// Put each corner exactly on its nearest sample, so that cusps are candidates themselves.
+	for (double c : m_corners)
+	{
+		const double wc = WrapAngle(c);
+		int nearest = 0;
+		double bestGap = 1e300;
+		for (int k = 0; k < count; ++k)
+		{
+			const double gap = std::fabs(WrapAngle(out->angle[k] - wc));
+			if (gap < bestGap) { bestGap = gap; nearest = k; }
+		}
+		out->angle[nearest] = wc;
+	}
+	std::sort(out->angle.begin(), out->angle.end());
+	out->angle.erase(std::unique(out->angle.begin(), out->angle.end()), out->angle.end());
+	for (double t : out->angle)
+		out->point.push_back(SurfacePoint(t, L));
+
+	// 3. Spacing and the measured deviation of the true curve from the sample polygon.
+	const int n = out->Count();
+	for (int k = 0; k < n; ++k)
+	{
+		const int j = (k + 1) % n;
+		out->maxSpacing = std::max(out->maxSpacing, Distance(out->point[k], out->point[j]));
+		double t0 = out->angle[k], t1 = out->angle[j];
+		if (t1 <= t0) t1 += 2.0 * kPi;
+		for (int q = 1; q < 4; ++q)
+		{
+			const Vec2 mid = SurfacePoint(t0 + (t1 - t0) * q / 4.0, L);
+			out->maxDeviation = std::max(out->maxDeviation, SegmentDistance(mid, out->point[k], out->point[j]));
+		}
+	}
+	m_samples.emplace_back(count, out);
+	return out;
+}
+
+void Shape::Finalize(double boundingRadius, const MassProperties* mass)
+{
+	const double L = m_surfaceLevel;
+	if (boundingRadius > 0.0)
+	{
+		m_boundingRadius = boundingRadius;
+	}
+	else
+	{
+		// Largest sample radius, refined between its neighbours.
+		const auto s = Samples();
+		const int n = s->Count();
+		int best = 0;
+		for (int i = 1; i < n; ++i)
+			if (Length(s->point[i]) > Length(s->point[best])) best = i;
+		double lo = s->angle[(best + n - 1) % n], hi = s->angle[(best + 1) % n];
+		const double mid = s->angle[best];
+		if (lo > mid) lo -= 2.0 * kPi;
+		if (hi < mid) hi += 2.0 * kPi;
+		auto negR = [&](double t) { return -Length(SurfacePoint(t, L)); };
+		const ScalarResult r = MinimizeBrent(negR, lo, hi, 1e-15, 1e-15, 200);
+		m_boundingRadius = std::max(-r.fx, Length(s->point[best]));
+	}
+	if (mass)
+	{
+		m_mass = *mass;
+		return;
+	}
+	// Polar quadrature over the star-shaped region r ≤ R(θ):
+	//   A = ∫R²/2, ∫x dA = ∫R³cosθ/3, ∫x² dA = ∫R⁴cos²θ/4, ...
+	std::vector<double> breaks;
+	for (int i = 0; i <= 16; ++i)
+		breaks.push_back(-kPi + 2.0 * kPi * i / 16);
+	for (double c : m_corners)
+		breaks.push_back(WrapAngle(c));
+	std::sort(breaks.begin(), breaks.end());
+	breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+	auto integrand = [&](double t) {
+		const double c = std::cos(t), s = std::sin(t);
+		const double R = RadiusAt(Vec2(c, s), L);
+		const double R2 = R * R, R3 = R2 * R, R4 = R2 * R2;
+		return std::array<double, 6>{R2 / 2.0, R3 * c / 3.0, R3 * s / 3.0, R4 * c * c / 4.0, R4 * s * s / 4.0, R4 * c * s / 4.0};
+	};
+	const auto q = IntegrateAdaptive<6>(integrand, breaks, 1e-14, 20000);
+	MassProperties mp;
+	mp.area = q.value[0];
+	mp.centroid = Vec2(q.value[1], q.value[2]) / mp.area;
+	mp.Iyy = q.value[3] - mp.area * mp.centroid.x * mp.centroid.x;
+	mp.Ixx = q.value[4] - mp.area * mp.centroid.y * mp.centroid.y;
+	mp.Ixy = q.value[5] - mp.area * mp.centroid.x * mp.centroid.y;
+	mp.polarMoment = mp.Ixx + mp.Iyy;
+	m_mass = mp;
+}
+
+} // namespace b2a

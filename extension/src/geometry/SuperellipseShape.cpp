@@ -1,0 +1,263 @@
+// b2analytic: superellipse family with closed forms.
+#include "b2analytic/SuperellipseShape.h"
+
+#include "numerics/RootFinding.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace b2a
+{
+
+namespace
+{
+ShapeFamily FamilyOf(double a, double b, double n, double m)
+{
+	if (n == 2.0 && m == 2.0)
+		return a == b ? ShapeFamily::circle : ShapeFamily::ellipse;
+	return ShapeFamily::superellipse;
+}
+
+int SmallInteger(double e)
+{
+	return (e == std::floor(e) && e >= 0.0 && e <= 64.0) ? int(e) : -1;
+}
+
+void RequirePositive(const char* what, const char* field, double v)
+{
+	if (!std::isfinite(v) || !(v > 0.0))
+		throw InvalidParameter(what, field, "must be finite and > 0", v);
+}
+
+void RequireExponent(const char* what, const char* field, double v, double lowest)
+{
+	if (!std::isfinite(v) || !(v >= lowest))
+		throw InvalidParameter(what, field, "must be finite and >= " + FormatNumber(lowest), v);
+}
+
+double Sign(double t) { return t > 0.0 ? 1.0 : (t < 0.0 ? -1.0 : 0.0); }
+} // namespace
+
+SuperellipseShape::SuperellipseShape(double a, double b, double n, double m) : SuperellipseShape(a, b, n, m, 0.0) {}
+
+SuperellipseShape::SuperellipseShape(double a, double b, double n, double m, double zeta)
+	: Shape(FamilyOf(a, b, n, m), 1.0, true, n >= 2.0 && m >= 2.0,
+	        // λ^(1/q) with q = min(n, m)/2 is ‖(|x/a|^{n/q}, |y/b|^{m/q})‖_q squared-like: convex
+	        // (a q-norm of convex non-negative terms) and of degree about 2. The ζ-form is already.
+	        zeta > 0.0 ? 1.0 : std::max(1.0, 0.5 * std::min(n, m))),
+	  m_a(a), m_b(b), m_n(n), m_m(m), m_zeta(zeta), m_nInt(SmallInteger(n)), m_mInt(SmallInteger(m))
+{
+	// Validation happens before Finalize touches any geometry.
+	const char* what = "superellipse";
+	RequirePositive(what, "a", a);
+	RequirePositive(what, "b", b);
+	RequireExponent(what, "n", n, 1.0);
+	RequireExponent(what, "m", m, 1.0);
+
+	const MassProperties mass = ClosedFormMass(a, b, n, m);
+	double radius = -1.0; // numeric unless a closed form exists
+	if (n == 2.0 && m == 2.0)
+		radius = std::max(a, b);
+	else if (n <= 2.0 && m <= 2.0)
+		radius = std::max(a, b); // the level set lies inside the ellipse's: farthest points are the axes' ends
+	Finalize(radius, &mass);
+}
+
+std::shared_ptr<SuperellipseShape> SuperellipseShape::FromZeta(double a, double b, double zeta)
+{
+	if (!std::isfinite(zeta) || !(zeta >= 0.5))
+		throw InvalidParameter("superellipse", "zeta", "must be finite and >= 0.5", zeta);
+	return std::shared_ptr<SuperellipseShape>(new SuperellipseShape(a, b, 2.0 * zeta, 2.0 * zeta, zeta));
+}
+
+std::string SuperellipseShape::Describe() const
+{
+	switch (Family())
+	{
+	case ShapeFamily::circle:
+		return "circle(r=" + FormatNumber(m_a) + ")";
+	case ShapeFamily::ellipse:
+		return "ellipse(a=" + FormatNumber(m_a) + ", b=" + FormatNumber(m_b) + ")";
+	default:
+		if (IsNormalised())
+			return "superellipse(a=" + FormatNumber(m_a) + ", b=" + FormatNumber(m_b) + ", zeta=" + FormatNumber(m_zeta) + ")";
+		return "superellipse(a=" + FormatNumber(m_a) + ", b=" + FormatNumber(m_b) + ", n=" + FormatNumber(m_n) +
+		       ", m=" + FormatNumber(m_m) + ")";
+	}
+}
+
+double SuperellipseShape::PowAbs(double t, double e, int k)
+{
+	t = std::fabs(t);
+	if (k < 0)
+		return std::pow(t, e);
+	// Exponentiation by squaring: exact to rounding and several times faster than pow.
+	double r = 1.0;
+	while (k > 0)
+	{
+		if (k & 1) r *= t;
+		t *= t;
+		k >>= 1;
+	}
+	return r;
+}
+
+double SuperellipseShape::Level(Vec2 x) const
+{
+	const double f = PowAbs(x.x / m_a, m_n, m_nInt) + PowAbs(x.y / m_b, m_m, m_mInt);
+	return m_zeta > 0.0 ? std::pow(f, 1.0 / m_zeta) : f;
+}
+
+LevelDerivatives SuperellipseShape::RawDerivatives(Vec2 x) const
+{
+	// f = |X|^n + |Y|^m with X = x/a, Y = y/b:
+	//   ∂f/∂x = (n/a) sgn(X)|X|^{n−1},  ∂²f/∂x² = n(n−1)/a² |X|^{n−2}   (same for y).
+	const double X = x.x / m_a, Y = x.y / m_b;
+	const double ax = std::fabs(X), ay = std::fabs(Y);
+	const double xn2 = (m_n < 2.0 && ax == 0.0) ? 0.0 : PowAbs(ax, m_n - 2.0, m_nInt >= 2 ? m_nInt - 2 : -1);
+	const double ym2 = (m_m < 2.0 && ay == 0.0) ? 0.0 : PowAbs(ay, m_m - 2.0, m_mInt >= 2 ? m_mInt - 2 : -1);
+	const double xn1 = m_n >= 2.0 ? xn2 * ax : PowAbs(ax, m_n - 1.0, m_nInt >= 1 ? m_nInt - 1 : -1);
+	const double ym1 = m_m >= 2.0 ? ym2 * ay : PowAbs(ay, m_m - 1.0, m_mInt >= 1 ? m_mInt - 1 : -1);
+	LevelDerivatives d;
+	d.value = xn1 * ax + ym1 * ay;
+	d.gradient = Vec2(m_n / m_a * Sign(X) * xn1, m_m / m_b * Sign(Y) * ym1);
+	d.hessian.xx = m_n * (m_n - 1.0) / (m_a * m_a) * xn2;
+	d.hessian.yy = m_m * (m_m - 1.0) / (m_b * m_b) * ym2;
+	d.hessian.xy = 0.0;
+	return d;
+}
+
+LevelDerivatives SuperellipseShape::Derivatives(Vec2 x) const
+{
+	LevelDerivatives d = RawDerivatives(x);
+	if (m_zeta > 0.0 && m_zeta != 1.0)
+	{
+		// λ = f^{1/ζ}: ∇λ = (1/ζ) f^{1/ζ−1} ∇f,
+		// ∇²λ = (1/ζ) f^{1/ζ−1} ∇²f + (1/ζ)(1/ζ−1) f^{1/ζ−2} ∇f ∇fᵀ.
+		const double f = d.value;
+		if (f <= 0.0)
+			return LevelDerivatives{}; // origin: λ, ∇λ vanish; the degree-0 Hessian has no limit
+		const double p = 1.0 / m_zeta;
+		const double g1 = p * std::pow(f, p - 1.0);
+		const double g2 = p * (p - 1.0) * std::pow(f, p - 2.0);
+		d.hessian = g1 * d.hessian + g2 * Outer(d.gradient);
+		d.gradient = g1 * d.gradient;
+		d.value = std::pow(f, p);
+	}
+	return d;
+}
+
+Vec2 SuperellipseShape::Gradient(Vec2 x) const
+{
+	return Derivatives(x).gradient;
+}
+
+double SuperellipseShape::RadiusAt(Vec2 u, double level) const
+{
+	const double F = m_zeta > 0.0 ? std::pow(std::max(level, 0.0), m_zeta) : level;
+	if (!(F > 0.0))
+		return 0.0;
+	// f(t·u) = t^n·A + t^m·B.
+	const double A = PowAbs(u.x / m_a, m_n, m_nInt);
+	const double B = PowAbs(u.y / m_b, m_m, m_mInt);
+	if (m_n == m_m)
+		return std::pow(F / (A + B), 1.0 / m_n);
+	if (A == 0.0)
+		return std::pow(F / B, 1.0 / m_m);
+	if (B == 0.0)
+		return std::pow(F / A, 1.0 / m_n);
+	// h(s) = A e^{ns} + B e^{ms} − F is convex and increasing in s = log t. Start where one term
+	// alone reaches F (h ≥ 0 there): Newton then descends monotonically onto the root.
+	double s = std::min(std::log(F / A) / m_n, std::log(F / B) / m_m);
+	for (int it = 0; it < 100; ++it)
+	{
+		const double tn = A * std::exp(m_n * s), tm = B * std::exp(m_m * s);
+		const double h = tn + tm - F;
+		const double dh = m_n * tn + m_m * tm;
+		const double step = h / dh;
+		s -= step;
+		if (!(std::fabs(step) > 1e-16 * std::max(1.0, std::fabs(s))))
+			break;
+	}
+	return std::exp(s);
+}
+
+Vec2 SuperellipseShape::Support(Vec2 d) const
+{
+	// In scaled coordinates X = x/a, Y = y/b the support of the unit p-ball along e = (a·dx, b·dy).
+	Vec2 e(m_a * d.x, m_b * d.y);
+	const double emax = std::max(std::fabs(e.x), std::fabs(e.y));
+	if (!(emax > 0.0) || !std::isfinite(emax))
+		return Vec2(m_a, 0.0);
+	e = e / emax; // degree-0 homogeneous: normalise against overflow
+	if (m_n == m_m)
+	{
+		const double p = m_n;
+		if (p == 1.0)
+			return std::fabs(e.x) >= std::fabs(e.y) ? Vec2(m_a * Sign(e.x), 0.0) : Vec2(0.0, m_b * Sign(e.y));
+		// Hölder: X_i = sgn(e_i)|e_i|^{q−1} / ‖e‖_q^{q−1}, q = p/(p−1).
+		const double q = p / (p - 1.0);
+		const double px = std::pow(std::fabs(e.x), q - 1.0), py = std::pow(std::fabs(e.y), q - 1.0);
+		const double norm = std::pow(px * std::fabs(e.x) + py * std::fabs(e.y), (q - 1.0) / q);
+		return Vec2(m_a * Sign(e.x) * px / norm, m_b * Sign(e.y) * py / norm);
+	}
+	if (m_n == 1.0 || m_m == 1.0)
+		return Shape::Support(d);
+	if (e.x == 0.0)
+		return Vec2(0.0, m_b * Sign(e.y));
+	if (e.y == 0.0)
+		return Vec2(m_a * Sign(e.x), 0.0);
+	// Lagrange: |e_x| = κ n |X|^{n−1}, |e_y| = κ m |Y|^{m−1}, |X|^n + |Y|^m = 1. With s = log κ,
+	// g(s) = exp(αx (cx − s)) + exp(αy (cy − s)) − 1, α = n/(n−1), c = log(|e|/n): convex and
+	// decreasing, so Newton from the left (g ≥ 0 at s = min(cx, cy)) is monotone.
+	const double ax = m_n / (m_n - 1.0), ay = m_m / (m_m - 1.0);
+	const double cx = std::log(std::fabs(e.x) / m_n), cy = std::log(std::fabs(e.y) / m_m);
+	double s = std::min(cx, cy);
+	for (int it = 0; it < 100; ++it)
+	{
+		const double tx = std::exp(ax * (cx - s)), ty = std::exp(ay * (cy - s));
+		const double g = tx + ty - 1.0;
+		const double dg = -ax * tx - ay * ty;
+		const double step = g / dg;
+		s -= step;
+		if (!(std::fabs(step) > 1e-16 * std::max(1.0, std::fabs(s))))
+			break;
+	}
+	const double X = std::exp((cx - s) / (m_n - 1.0));
+	const double Y = std::exp((cy - s) / (m_m - 1.0));
+	return Vec2(m_a * Sign(e.x) * X, m_b * Sign(e.y) * Y);
+}
+
+MassProperties SuperellipseShape::ClosedFormMass(double a, double b, double n, double m)
+{
+	// Dirichlet: ∫∫_{u,v≥0, uⁿ+vᵐ≤1} u^{p−1} v^{q−1} = Γ(p/n)Γ(q/m) / (n m Γ(1 + p/n + q/m)).
+	auto dirichlet = [&](double p, double q) {
+		return std::exp(std::lgamma(p / n) + std::lgamma(q / m) - std::lgamma(1.0 + p / n + q / m)) / (n * m);
+	};
+	MassProperties mp;
+	mp.area = 4.0 * a * b * dirichlet(1.0, 1.0);
+	mp.Iyy = 4.0 * a * a * a * b * dirichlet(3.0, 1.0); // ∫x² dA
+	mp.Ixx = 4.0 * a * b * b * b * dirichlet(1.0, 3.0); // ∫y² dA
+	mp.Ixy = 0.0;
+	mp.polarMoment = mp.Ixx + mp.Iyy;
+	return mp;
+}
+
+std::shared_ptr<SuperellipseShape> MakeEllipse(double a, double b)
+{
+	return std::make_shared<SuperellipseShape>(a, b, 2.0, 2.0);
+}
+
+std::shared_ptr<SuperellipseShape> MakeCircle(double r)
+{
+	if (!std::isfinite(r) || !(r > 0.0))
+		throw InvalidParameter("circle", "r", "must be finite and > 0", r);
+	return std::make_shared<SuperellipseShape>(r, r, 2.0, 2.0);
+}
+
+std::shared_ptr<SuperellipseShape> MakeSuperellipse(double a, double b, double n, double m)
+{
+	return std::make_shared<SuperellipseShape>(a, b, n, m);
+}
+
+} // namespace b2a

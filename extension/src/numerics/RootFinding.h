@@ -1,0 +1,161 @@
+// b2analytic: bracketed one-dimensional root finding and minimisation (internal).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace b2a
+{
+
+/// Outcome of a one-dimensional solve.
+struct ScalarResult
+{
+	double x = 0.0;        ///< the root or the minimiser
+	double fx = 0.0;       ///< f there
+	int iterations = 0;    ///< function evaluations used
+	bool converged = false;///< the bracket shrank below the tolerance within the cap
+};
+
+/// Brent's method (Brent 1973, "zeroin") for a root of f in [a, b] with f(a), f(b) of opposite
+/// signs (or zero). Mixes bisection, secant and inverse quadratic steps; never leaves the
+/// bracket, so it converges whenever f is continuous. Stops when the bracket is below
+/// xtol + 4·eps·|x| or after maxIter evaluations.
+template <class F>
+ScalarResult FindRootBrent(F&& f, double a, double b, double fa, double fb, double xtol, int maxIter = 200)
+{
+	ScalarResult r;
+	if (fa == 0.0) { r.x = a; r.fx = 0.0; r.converged = true; return r; }
+	if (fb == 0.0) { r.x = b; r.fx = 0.0; r.converged = true; return r; }
+	if ((fa > 0.0) == (fb > 0.0) || !std::isfinite(fa) || !std::isfinite(fb))
+	{
+		r.x = std::fabs(fa) < std::fabs(fb) ? a : b;
+		r.fx = std::fabs(fa) < std::fabs(fb) ? fa : fb;
+		return r; // not bracketed
+	}
+	const double eps = std::numeric_limits<double>::epsilon();
+	double c = a, fc = fa, d = b - a, e = d;
+	for (int it = 0; it < maxIter; ++it)
+	{
+		if ((fb > 0.0) == (fc > 0.0))
+		{
+			c = a; fc = fa; d = b - a; e = d;
+		}
+		if (std::fabs(fc) < std::fabs(fb))
+		{
+			a = b; b = c; c = a;
+			fa = fb; fb = fc; fc = fa;
+		}
+		const double tol = 2.0 * eps * std::fabs(b) + 0.5 * xtol;
+		const double m = 0.5 * (c - b);
+		if (std::fabs(m) <= tol || fb == 0.0)
+		{
+			r.x = b; r.fx = fb; r.iterations = it; r.converged = true;
+			return r;
+		}
+		if (std::fabs(e) >= tol && std::fabs(fa) > std::fabs(fb))
+		{
+			// Secant or inverse quadratic interpolation.
+			double p, q;
+			const double s = fb / fa;
+			if (a == c)
+			{
+				p = 2.0 * m * s;
+				q = 1.0 - s;
+			}
+			else
+			{
+				const double qa = fa / fc, rr = fb / fc;
+				p = s * (2.0 * m * qa * (qa - rr) - (b - a) * (rr - 1.0));
+				q = (qa - 1.0) * (rr - 1.0) * (s - 1.0);
+			}
+			if (p > 0.0) q = -q; else p = -p;
+			if (2.0 * p < std::fmin(3.0 * m * q - std::fabs(tol * q), std::fabs(e * q)))
+			{
+				e = d; d = p / q;
+			}
+			else
+			{
+				d = m; e = m;
+			}
+		}
+		else
+		{
+			d = m; e = m;
+		}
+		a = b; fa = fb;
+		b += std::fabs(d) > tol ? d : (m > 0.0 ? tol : -tol);
+		fb = f(b);
+		if (!std::isfinite(fb))
+		{
+			r.x = a; r.fx = fa; r.iterations = it + 1;
+			return r;
+		}
+	}
+	r.x = b; r.fx = fb; r.iterations = maxIter;
+	return r;
+}
+
+/// Brent's method for a local minimum of f in [a, b] (golden section plus parabolic steps).
+/// Converges to |x − x*| ≲ tol·|x| + atol, which for a smooth minimum means f is exact to
+/// about eps·|f|; the argument is exact only to about √eps — use a derivative root where the
+/// argument matters.
+template <class F>
+ScalarResult MinimizeBrent(F&& f, double a, double b, double rtol, double atol, int maxIter = 200)
+{
+	const double golden = 0.3819660112501051;
+	double x = a + golden * (b - a), w = x, v = x;
+	double fx = f(x), fw = fx, fv = fx;
+	double d = 0.0, e = 0.0;
+	ScalarResult r;
+	for (int it = 0; it < maxIter; ++it)
+	{
+		const double xm = 0.5 * (a + b);
+		const double tol1 = rtol * std::fabs(x) + atol, tol2 = 2.0 * tol1;
+		if (std::fabs(x - xm) <= tol2 - 0.5 * (b - a))
+		{
+			r.x = x; r.fx = fx; r.iterations = it + 1; r.converged = true;
+			return r;
+		}
+		bool golden_step = true;
+		if (std::fabs(e) > tol1)
+		{
+			const double rr = (x - w) * (fx - fv);
+			double q = (x - v) * (fx - fw);
+			double p = (x - v) * q - (x - w) * rr;
+			q = 2.0 * (q - rr);
+			if (q > 0.0) p = -p; else q = -q;
+			const double etemp = e;
+			e = d;
+			if (!(std::fabs(p) >= std::fabs(0.5 * q * etemp) || p <= q * (a - x) || p >= q * (b - x)))
+			{
+				d = p / q;
+				const double u = x + d;
+				if (u - a < tol2 || b - u < tol2) d = xm >= x ? tol1 : -tol1;
+				golden_step = false;
+			}
+		}
+		if (golden_step)
+		{
+			e = (x >= xm ? a : b) - x;
+			d = golden * e;
+		}
+		const double u = std::fabs(d) >= tol1 ? x + d : x + (d >= 0.0 ? tol1 : -tol1);
+		const double fu = f(u);
+		if (fu <= fx)
+		{
+			if (u >= x) a = x; else b = x;
+			v = w; fv = fw; w = x; fw = fx; x = u; fx = fu;
+		}
+		else
+		{
+			if (u < x) a = u; else b = u;
+			if (fu <= fw || w == x) { v = w; fv = fw; w = u; fw = fu; }
+			else if (fu <= fv || v == x || v == w) { v = u; fv = fu; }
+		}
+	}
+	r.x = x; r.fx = fx; r.iterations = maxIter;
+	return r;
+}
+
+} // namespace b2a

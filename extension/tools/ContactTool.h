@@ -1,0 +1,17 @@
+// b2analytic: the request handling of the b2a_contact tool (JSON Lines in, JSON Lines out).
+#pragma once
+
+#include <string>
+
+namespace b2a::tool
+{
+
+/// Answer one request line. Returns the JSON object to print (one line, no newline) and sets
+/// `ok` to false when the answer is an error object. Never throws: every failure, malformed
+/// JSON included, becomes {"id": ..., "status": "error", "error": "..."}.
+std::string AnswerContactRequest(const std::string& line, bool& ok);
+
+/// The text of `b2a_contact --help`.
+const char* ContactToolHelp();
+
+} // namespace b2a::tool
