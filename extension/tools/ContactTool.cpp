@@ -211,24 +211,29 @@ json Answer(const json& request, json& id)
 std::string AnswerContactRequest(const std::string& line, bool& ok)
 {
 	json id = nullptr;
+	ok = false;
+	auto error = [&](const std::string& message) {
+		const json err = {{"id", id}, {"status", "error"}, {"error", message}};
+		return err.dump(-1, ' ', false, json::error_handler_t::replace);
+	};
+	json request;
 	try
 	{
-		const json request = json::parse(line);
+		request = json::parse(line);
+	}
+	catch (const json::exception& e)
+	{
+		return error(std::string("malformed JSON: ") + e.what()); // syntax errors, number overflow
+	}
+	try
+	{
 		const json out = Answer(request, id);
 		ok = true;
-		return out.dump();
-	}
-	catch (const json::parse_error& e)
-	{
-		ok = false;
-		json err = {{"id", id}, {"status", "error"}, {"error", std::string("malformed JSON: ") + e.what()}};
-		return err.dump(-1, ' ', false, json::error_handler_t::replace);
+		return out.dump(-1, ' ', false, json::error_handler_t::replace);
 	}
 	catch (const std::exception& e)
 	{
-		ok = false;
-		json err = {{"id", id}, {"status", "error"}, {"error", e.what()}};
-		return err.dump(-1, ' ', false, json::error_handler_t::replace);
+		return error(e.what());
 	}
 }
 
