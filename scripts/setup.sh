@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Install what b2analytic needs from Debian's packages, and only what is missing.
+# Safe to run any number of times: with everything present it installs nothing.
+set -euo pipefail
+
+packages=(
+	g++ cmake make          # compiler and build system
+	libbox2d-dev            # Box2D 2.4.1, the physics engine we extend
+	libeigen3-dev           # small dense linear algebra (Newton's Jacobian)
+	doctest-dev             # unit tests
+	nlohmann-json3-dev      # JSON in and out of the tools, demos and benchmarks
+)
+
+missing=()
+for p in "${packages[@]}"; do
+	if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+		missing+=("$p")
+	fi
+done
+
+if ((${#missing[@]} == 0)); then
+	echo "setup: all ${#packages[@]} packages present, nothing to install" >&2
+	exit 0
+fi
+
+sudo=()
+if [ "$(id -u)" -ne 0 ]; then
+	sudo=(sudo)
+fi
+echo "setup: installing ${missing[*]}" >&2
+"${sudo[@]}" apt-get update
+DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
