@@ -20,8 +20,8 @@ class InvalidParameter : public std::invalid_argument
 public:
 	/// Build the message "<what>: field '<field>' <rule>, got <value>".
 	InvalidParameter(const std::string& what, const std::string& field, const std::string& rule, double value);
-	/// Build a free-form message (it still names the field).
-	explicit InvalidParameter(const std::string& message);
+	/// Build a free-form message that names the field; `field` is what Field() returns.
+	InvalidParameter(const std::string& message, const std::string& field);
 	/// The offending field's name.
 	const std::string& Field() const { return m_field; }
 
@@ -141,7 +141,7 @@ public:
 	/// Polar angles (in [-π, π)) where the surface has corners; quadrature and sampling split there.
 	const std::vector<double>& CornerAngles() const { return m_corners; }
 
-	/// Surface samples at the own level (count ≥ 8), computed on first use and cached.
+	/// Surface samples at the own level (count ≥ 3), computed on first use and cached.
 	std::shared_ptr<const SurfaceSamples> Samples(int count = kDefaultSampleCount) const;
 	/// The default number of surface samples for the grid method.
 	static constexpr int kDefaultSampleCount = 256;

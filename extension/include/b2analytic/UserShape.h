@@ -21,7 +21,8 @@ struct UserShapeDef
 	std::function<double(Vec2 x, double level)> function;
 	/// The particle's own level L₀.
 	double level = 1.0;
-	/// Optional ∂G/∂x at (x, L); central differences when empty.
+	/// Optional ∂G/∂x at (x, L); central differences of λ when empty, and near points where λ is
+	/// a multiple root of L ↦ G(x, L) (there the implicit function theorem divides 0 by 0).
 	std::function<Vec2(Vec2 x, double level)> gradient;
 	/// Optional ∂²G/∂x² at (x, L); differences of the gradient when empty.
 	std::function<Sym22(Vec2 x, double level)> hessian;
@@ -60,6 +61,9 @@ private:
 	double LengthHint() const override { return m_def.lengthScale; }
 	// ∇λ by the implicit function theorem (user gradient) or central differences of λ.
 	Vec2 LevelGradient(Vec2 x, double lambda) const;
+	// The user derivatives and ∂G/∂L are trustworthy at (x, λ): fine and coarse differences of G
+	// in L agree to the factor `agreement` (a simple root in L).
+	bool ImplicitUsable(Vec2 x, double lambda, double agreement) const;
 	UserShapeDef m_def;
 };
 

@@ -276,7 +276,7 @@ void RegisterContactFunction(ShapeFamily a, ShapeFamily b, ContactFunction funct
 	if (int(a) < 0 || int(a) >= int(ShapeFamily::count) || int(b) < 0 || int(b) >= int(ShapeFamily::count))
 		throw InvalidParameter("RegisterContactFunction", "family", "must name a shape family", double(int(a)));
 	if (!function)
-		throw InvalidParameter("RegisterContactFunction: field 'function' is null");
+		throw InvalidParameter("RegisterContactFunction: field 'function' is null", "function");
 	Table().Set(a, b, function);
 }
 

@@ -16,7 +16,10 @@ InvalidParameter::InvalidParameter(const std::string& what, const std::string& f
 {
 }
 
-InvalidParameter::InvalidParameter(const std::string& message) : std::invalid_argument(message) {}
+InvalidParameter::InvalidParameter(const std::string& message, const std::string& field)
+	: std::invalid_argument(message), m_field(field)
+{
+}
 
 std::string FormatNumber(double value)
 {
@@ -64,10 +67,8 @@ double Shape::RadiusAt(Vec2 u, double level) const
 	double fhi = phi(hi);
 	for (int i = 0; i < 2000 && !(fhi >= 0.0); ++i)
 	{
-		if (!std::isfinite(fhi) && !std::isnan(fhi))
-			break; // +inf: outside for sure
-		if (std::isnan(fhi))
-			return std::numeric_limits<double>::quiet_NaN();
+		if (std::isnan(fhi) || fhi == -std::numeric_limits<double>::infinity())
+			return std::numeric_limits<double>::quiet_NaN(); // no surface along this ray
 		lo = hi;
 		flo = fhi;
 		hi *= 2.0;
@@ -163,8 +164,8 @@ double SegmentDistance(Vec2 p, Vec2 a, Vec2 b)
 
 std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 {
-	if (count < 8)
-		throw InvalidParameter("surface samples", "count", "must be >= 8", count);
+	if (count < 3)
+		throw InvalidParameter("surface samples", "count", "must be >= 3", count);
 	std::lock_guard<std::mutex> lock(m_sampleMutex);
 	for (const auto& entry : m_samples)
 		if (entry.first == count)
@@ -225,7 +226,8 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 	for (const Dense& d : dense)
 		if (!IsFinite(d.p))
 			throw InvalidParameter(Describe() + ": no finite surface point at polar angle " + FormatNumber(d.theta) +
-			                       " (field 'function' must describe a bounded, star-shaped particle)");
+			                           " (field 'function' must describe a bounded, star-shaped particle)",
+			                       "function");
 
 	// 2. Equidistribute the combined measure: half arc length, half turning.
 	std::vector<double> len(nd), turn(nd);

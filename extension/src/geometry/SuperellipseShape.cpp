@@ -54,6 +54,18 @@ SuperellipseShape::SuperellipseShape(double a, double b, double n, double m, dou
 	RequireExponent(what, "n", n, 1.0);
 	RequireExponent(what, "m", m, 1.0);
 
+	// An exponent of 1 puts a corner where its term vanishes: |x/a| at x = 0 (polar ±π/2),
+	// |y/b| at y = 0 (polar 0 and π, reported as −π).
+	if (n == 1.0)
+	{
+		AddCorner(0.5 * kPi);
+		AddCorner(-0.5 * kPi);
+	}
+	if (m == 1.0)
+	{
+		AddCorner(0.0);
+		AddCorner(-kPi);
+	}
 	const MassProperties mass = ClosedFormMass(a, b, n, m);
 	double radius = -1.0; // numeric unless a closed form exists
 	if (n == 2.0 && m == 2.0)

@@ -22,7 +22,7 @@ UserShape::UserShape(UserShapeDef def)
 {
 	const std::string who = Who(m_def);
 	if (!m_def.function)
-		throw InvalidParameter(who + ": field 'function' is empty (a callable G(x, level) is required)");
+		throw InvalidParameter(who + ": field 'function' is empty (a callable G(x, level) is required)", "function");
 	if (!std::isfinite(m_def.level))
 		throw InvalidParameter(who, "level", "must be finite", m_def.level);
 	if (!std::isfinite(m_def.lengthScale) || !(m_def.lengthScale > 0.0))
@@ -87,9 +87,25 @@ double UserShape::Level(Vec2 x) const
 	return FindRootBrent(g, a, b, ga, gb, 0.0, 300).x;
 }
 
+bool UserShape::ImplicitUsable(Vec2 x, double lambda, double agreement) const
+{
+	// The implicit formulas divide by ∂G/∂L. Where λ is a multiple root of L ↦ G(x, L) (the heart
+	// written as G has a triple root on its axes) ∂G/∂L vanishes with ∂G/∂x and the quotient is
+	// noise, and near one (G far from linear in L over a small step) it loses digits. Detect both
+	// by comparing ∂G/∂L at a fine step with a coarse one: at a well-separated simple root they
+	// agree; near a multiple root the fine one is smaller.
+	if (!m_def.gradient)
+		return false;
+	const double scale = std::max(std::fabs(lambda), 1.0);
+	const double h = 1e-6 * scale, H = 1e-2 * scale;
+	const double fine = (m_def.function(x, lambda + h) - m_def.function(x, lambda - h)) / (2.0 * h);
+	const double coarse = (m_def.function(x, lambda + H) - m_def.function(x, lambda - H)) / (2.0 * H);
+	return std::isfinite(fine) && fine != 0.0 && std::fabs(fine) >= agreement * std::fabs(coarse);
+}
+
 Vec2 UserShape::LevelGradient(Vec2 x, double lambda) const
 {
-	if (m_def.gradient)
+	if (ImplicitUsable(x, lambda, 0.5))
 	{
 		// G(x, λ(x)) = 0  ⇒  ∇λ = −∂G/∂x / ∂G/∂L.
 		const double h = 1e-6 * std::max(std::fabs(lambda), 1.0);
@@ -111,7 +127,7 @@ LevelDerivatives UserShape::Derivatives(Vec2 x) const
 	LevelDerivatives d;
 	d.value = Level(x);
 	d.gradient = LevelGradient(x, d.value);
-	if (m_def.gradient && m_def.hessian)
+	if (m_def.hessian && ImplicitUsable(x, d.value, 0.5))
 	{
 		// Differentiate G(x, λ(x)) = 0 twice:
 		//   ∇²λ = −(G_xx + G_xL ∇λᵀ + ∇λ G_xLᵀ + G_LL ∇λ∇λᵀ) / G_L.

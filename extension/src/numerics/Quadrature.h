@@ -91,16 +91,19 @@ QuadratureResult<K> IntegrateAdaptive(F&& f, const std::vector<double>& breaks, 
 	using Interval = detail::GkInterval<K>;
 	std::priority_queue<Interval> queue;
 	std::array<double, K> total{}, totalErr{}, totalAbs{};
+	// Priority: the interval's error relative to the whole integral's size, worst component.
+	// (Its own relative error times its width would starve a narrow interval at a singularity.)
 	auto push = [&](Interval iv) {
-		double pr = 0.0;
 		for (int k = 0; k < K; ++k)
 		{
 			total[k] += iv.value[k];
 			totalErr[k] += iv.error[k];
 			totalAbs[k] += iv.absValue[k];
-			pr = std::max(pr, iv.error[k] / (iv.absValue[k] + 1e-300));
 		}
-		iv.priority = pr * (iv.b - iv.a);
+		double pr = 0.0;
+		for (int k = 0; k < K; ++k)
+			pr = std::max(pr, iv.error[k] / (totalAbs[k] + 1e-300));
+		iv.priority = pr;
 		queue.push(iv);
 	};
 	for (size_t i = 0; i + 1 < breaks.size(); ++i)

@@ -1,0 +1,197 @@
+// HeartShape (paper eq. 20): level function, cusps, axis convention, symmetry, area.
+#include <doctest/doctest.h>
+
+#include "GeometryReference.h"
+
+#include <array>
+#include <cmath>
+
+using namespace b2a;
+using namespace b2a::test;
+
+TEST_CASE("heart: the level is x^2 + y^2 - cbrt(x^2 y^3) and the particle is where G <= 0")
+{
+	const auto heart = MakeHeart(1.7);
+	CHECK(heart->Family() == ShapeFamily::heart);
+	CHECK(heart->SurfaceLevel() == 1.7);
+	CHECK(heart->Alpha() == 1.7);
+	CHECK(heart->Describe() == "heart(alpha=1.7)");
+	CHECK(!heart->IsConvex());
+	CHECK(!heart->IsSmoothConvex());
+	Random rng(61);
+	for (int i = 0; i < 1000; ++i)
+	{
+		const Vec2 x(rng.Uniform(-2.5, 2.5), rng.Uniform(-2.5, 2.5));
+		const double lambda = heart->Level(x);
+		// Absolute 1e-15 of the terms' size r²: the level itself can cancel to near 0.
+		CHECK(std::fabs(lambda - double(HeartLevelRef(x))) <= 1e-15 * (1.0 + 2.0 * LengthSquared(x)));
+		// G(x, α) = (r² − α)³ − (r² − λ)³ has the sign of λ − α: the particle is {λ ≤ α}.
+		if (std::fabs(lambda - 1.7) > 1e-9)
+			CHECK((HeartG(x, 1.7) > 0.0) == (lambda > 1.7));
+	}
+}
+
+TEST_CASE("heart: notch and tip are corners at (0, +-sqrt(alpha)); the axes radii are sqrt(L)")
+{
+	for (double alpha : {0.3, 1.0, 2.5})
+	{
+		CAPTURE(alpha);
+		const auto heart = MakeHeart(alpha);
+		const double r = std::sqrt(alpha);
+		REQUIRE(heart->CornerAngles().size() == 2);
+		CHECK(heart->CornerAngles()[0] == -0.5 * kPi);
+		CHECK(heart->CornerAngles()[1] == 0.5 * kPi);
+		// On x = 0 and on y = 0 the level is r², so the level-L set crosses the axes at √L.
+		CHECK(RelativeError(heart->RadiusAt(Vec2(0, 1), alpha), r) < 1e-15);
+		CHECK(RelativeError(heart->RadiusAt(Vec2(0, -1), alpha), r) < 1e-15);
+		// SurfacePoint(±π/2) uses cos(π/2) ≈ 6e-17 rather than 0, and at a cusp the radius moves
+		// like |Δθ|^{2/3}: (6e-17)^{2/3} ≈ 1.5e-11. So these agree to 1e-10, not to rounding.
+		CHECK(Distance(heart->SurfacePoint(0.5 * kPi), Vec2(0, r)) <= 1e-10 * r);
+		CHECK(Distance(heart->SurfacePoint(-0.5 * kPi), Vec2(0, -r)) <= 1e-10 * r);
+		CHECK(Distance(heart->SurfacePoint(0.0), Vec2(r, 0)) <= 1e-15 * r);
+		CHECK(Distance(heart->SurfacePoint(kPi), Vec2(-r, 0)) <= 1e-15 * r);
+		for (double L : {0.01, 0.5, 4.0, 100.0})
+		{
+			CHECK(RelativeError(heart->RadiusAt(Vec2(0, 1), L), std::sqrt(L)) < 1e-15);
+			CHECK(RelativeError(heart->RadiusAt(Vec2(0, -1), L), std::sqrt(L)) < 1e-15);
+			CHECK(RelativeError(heart->RadiusAt(Vec2(1, 0), L), std::sqrt(L)) < 1e-15);
+		}
+		// The notch is a local minimum of the radius over angle, the lobes reach beyond it.
+		CHECK(heart->RadiusAt(Vec2(0, 1), alpha) < heart->RadiusAt(Normalize(Vec2(0.1, 1)), alpha));
+		CHECK(heart->RadiusAt(Vec2(0, 1), alpha) < heart->RadiusAt(Normalize(Vec2(-0.1, 1)), alpha));
+	}
+}
+
+TEST_CASE("heart: on the axis x = 0 the derivatives drop the singular terms (documented convention)")
+{
+	const auto heart = MakeHeart(1.0);
+	for (double y : {-1.3, -0.5, 0.0, 0.25, 1.0, 2.0})
+	{
+		CAPTURE(y);
+		const LevelDerivatives d = heart->Derivatives(Vec2(0.0, y));
+		CHECK(d.value == y * y);
+		CHECK(d.gradient.x == 0.0);
+		CHECK(d.gradient.y == 2.0 * y);
+		CHECK(d.hessian.xx == 2.0);
+		CHECK(d.hessian.xy == 0.0);
+		CHECK(d.hessian.yy == 2.0);
+		// ∂/∂y is continuous across the axis (2y − |x|^{2/3} → 2y) ...
+		CHECK(std::fabs(heart->Gradient(Vec2(1e-12, y)).y - 2.0 * y) < 1e-7);
+		if (y != 0.0)
+		{
+			// ... but ∂/∂x = 2x − (2/3) sgn(x)|x|^{−1/3} y jumps from +∞ to −∞ (times sgn y):
+			// the convention is a choice, not a limit.
+			const double gx = heart->Gradient(Vec2(1e-12, y)).x;
+			CHECK(gx == doctest::Approx(-(2.0 / 3.0) * 1e4 * y).epsilon(1e-9));
+			CHECK(heart->Gradient(Vec2(-1e-12, y)).x == doctest::Approx(-gx).epsilon(1e-12));
+		}
+	}
+}
+
+TEST_CASE("heart: mirror symmetric about the axis x = 0")
+{
+	const auto heart = MakeHeart(1.3);
+	Random rng(62);
+	for (int i = 0; i < 500; ++i)
+	{
+		const Vec2 x(rng.Uniform(0.01, 2), rng.Uniform(-2, 2));
+		const Vec2 m(-x.x, x.y);
+		const LevelDerivatives d = heart->Derivatives(x), e = heart->Derivatives(m);
+		CHECK(d.value == e.value);
+		CHECK(d.gradient.x == -e.gradient.x);
+		CHECK(d.gradient.y == e.gradient.y);
+		CHECK(d.hessian.xx == e.hessian.xx);
+		CHECK(d.hessian.xy == -e.hessian.xy);
+		CHECK(d.hessian.yy == e.hessian.yy);
+		const double t = rng.Uniform(-0.5 * kPi, 0.5 * kPi);
+		const Vec2 p = heart->SurfacePoint(t), q = heart->SurfacePoint(kPi - t);
+		CHECK(Distance(p, Vec2(-q.x, q.y)) <= 1e-15 * 2.0);
+	}
+	CHECK(std::fabs(heart->Mass().centroid.x) < 1e-14);
+	CHECK(std::fabs(heart->Mass().Ixy) < 1e-14 * heart->Mass().polarMoment);
+}
+
+namespace
+{
+// Radius of the heart (x²+y²−α)³ = x²y³ along the direction (c, s), by bisection on the
+// implicit function itself: F(t) = (t² − α)³ − t⁵ c² s³, negative at 0, with one positive root.
+double HeartRadiusByBisection(double alpha, double c, double s)
+{
+	auto F = [&](double t) {
+		const double w = t * t - alpha;
+		return w * w * w - t * t * t * t * t * c * c * s * s * s;
+	};
+	double lo = 0.0, hi = std::sqrt(alpha);
+	while (F(hi) <= 0.0) hi *= 2.0;
+	for (int it = 0; it < 200; ++it)
+	{
+		const double mid = 0.5 * (lo + hi);
+		if (mid <= lo || mid >= hi) break;
+		(F(mid) > 0.0 ? hi : lo) = mid;
+	}
+	return 0.5 * (lo + hi);
+}
+
+// ∫ over the heart of (1, x, y, x², y², xy) by the polar formulas ∫R²/2, ∫R³cos/3, ...
+// with the midpoint rule on [−π/2, π/2] and [π/2, 3π/2] (the cusps are the interval ends,
+// where the integrand behaves like |θ ∓ π/2|^{2/3}: the midpoint rule still converges as h^{5/3}).
+std::array<long double, 6> HeartMomentsPolar(double alpha, int perHalf)
+{
+	std::array<long double, 6> sum{};
+	const double h = kPi / perHalf;
+	for (int half = 0; half < 2; ++half)
+		for (int k = 0; k < perHalf; ++k)
+		{
+			const double t = -0.5 * kPi + half * kPi + (k + 0.5) * h;
+			const double c = std::cos(t), s = std::sin(t);
+			const long double R = HeartRadiusByBisection(alpha, c, s);
+			const long double R2 = R * R, R3 = R2 * R, R4 = R2 * R2;
+			sum[0] += R2 / 2;
+			sum[1] += R3 * c / 3;
+			sum[2] += R3 * s / 3;
+			sum[3] += R4 * c * c / 4;
+			sum[4] += R4 * s * s / 4;
+			sum[5] += R4 * c * s / 4;
+		}
+	for (auto& v : sum) v *= h;
+	return sum;
+}
+} // namespace
+
+TEST_CASE("heart: area and moments agree with an independent polar integral and a grid count")
+{
+	for (double alpha : {1.0, 2.5})
+	{
+		CAPTURE(alpha);
+		const auto heart = MakeHeart(alpha);
+		const MassProperties& mp = heart->Mass();
+
+		// Polar integral with our own bisection radius and midpoint rule, 2^15 points per half.
+		// Its error comes from the cusps and falls like h^{5/3} to h^{7/3} (measured against the
+		// library while halving h from 2^14 to 2^18 points: area 2e-11 → 3e-14, centroid 2e-8 →
+		// 2e-10, Ixx 4e-8 → 4e-10; Iyy, whose x² weight vanishes at the cusps, 4e-16 throughout).
+		// Tolerances are about 10× the 2^15 discrepancy.
+		const auto m = HeartMomentsPolar(alpha, 1 << 15);
+		const double area = double(m[0]);
+		const double cx = double(m[1] / m[0]), cy = double(m[2] / m[0]);
+		const double Iyy = double(m[3] - m[0] * cx * cx);
+		const double Ixx = double(m[4] - m[0] * cy * cy);
+		CHECK(RelativeError(mp.area, area) < 5e-11);
+		CHECK(std::fabs(mp.centroid.y - cy) < 1e-7 * std::sqrt(alpha));
+		CHECK(std::fabs(cx) < 1e-13 * std::sqrt(alpha)); // ∫x dA = 0 by symmetry
+		CHECK(RelativeError(mp.Iyy, Iyy) < 1e-13);
+		CHECK(RelativeError(mp.Ixx, Ixx) < 1e-7);
+		CHECK(std::fabs(double(m[5])) < 1e-12 * Iyy); // ∫xy dA = 0
+
+		// Grid count: cell centres of a 2000 × 2000 grid over [−2√α, 2√α]² with G(x, α) ≤ 0.
+		// The ~3000 boundary cells each err by less than one cell area (4e-6 α) and largely
+		// cancel: 1e-3 relative is a generous but independent bound.
+		const int n = 2000;
+		const double half = 2.0 * std::sqrt(alpha), cell = 2.0 * half / n;
+		long count = 0;
+		for (int i = 0; i < n; ++i)
+			for (int j = 0; j < n; ++j)
+				if (HeartG(Vec2(-half + (i + 0.5) * cell, -half + (j + 0.5) * cell), alpha) <= 0.0) ++count;
+		CHECK(RelativeError(mp.area, count * cell * cell) < 1e-3);
+	}
+}

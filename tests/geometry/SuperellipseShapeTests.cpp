@@ -1,0 +1,276 @@
+// SuperellipseShape: families, closed-form radii, the ζ-form, axis conventions, support points.
+#include <doctest/doctest.h>
+
+#include "GeometryReference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+using namespace b2a;
+using namespace b2a::test;
+
+TEST_CASE("superellipse: family, flags and description follow the parameters")
+{
+	const auto circle = MakeCircle(2.0);
+	CHECK(circle->Family() == ShapeFamily::circle);
+	CHECK(circle->Describe() == "circle(r=2)");
+	CHECK(std::string(FamilyName(circle->Family())) == "circle");
+
+	const auto ellipse = MakeEllipse(3.0, 0.5);
+	CHECK(ellipse->Family() == ShapeFamily::ellipse);
+	CHECK(ellipse->Describe() == "ellipse(a=3, b=0.5)");
+	CHECK(ellipse->IsConvex());
+	CHECK(ellipse->IsSmoothConvex());
+	CHECK(ellipse->LevelPower() == 1.0);
+	CHECK(ellipse->SurfaceLevel() == 1.0);
+
+	// n = m = 2 with a = b is a circle whichever factory made it.
+	CHECK(MakeSuperellipse(1.5, 1.5, 2.0, 2.0)->Family() == ShapeFamily::circle);
+	CHECK(SuperellipseShape::FromZeta(1.5, 1.5, 1.0)->Family() == ShapeFamily::circle);
+	CHECK(SuperellipseShape::FromZeta(1.5, 0.5, 1.0)->Family() == ShapeFamily::ellipse);
+
+	const auto smooth = MakeSuperellipse(1.0, 2.0, 4.0, 6.0);
+	CHECK(smooth->Family() == ShapeFamily::superellipse);
+	CHECK(smooth->Describe() == "superellipse(a=1, b=2, n=4, m=6)");
+	CHECK(smooth->IsConvex());
+	CHECK(smooth->IsSmoothConvex());
+	CHECK(smooth->LevelPower() == 2.0); // min(n, m) / 2
+	CHECK(smooth->N() == 4.0);
+	CHECK(smooth->M() == 6.0);
+	CHECK(!smooth->IsNormalised());
+
+	// Exponents below 2: convex but with infinite curvature on an axis (Newton does not apply).
+	const auto rough = MakeSuperellipse(1.0, 2.0, 1.5, 3.0);
+	CHECK(rough->IsConvex());
+	CHECK(!rough->IsSmoothConvex());
+	CHECK(rough->LevelPower() == 1.0);
+
+	const auto zeta = SuperellipseShape::FromZeta(2.0, 1.0, 1.5);
+	CHECK(zeta->IsNormalised());
+	CHECK(zeta->Zeta() == 1.5);
+	CHECK(zeta->N() == 3.0);
+	CHECK(zeta->M() == 3.0);
+	CHECK(zeta->LevelPower() == 1.0);
+	CHECK(zeta->Describe() == "superellipse(a=2, b=1, zeta=1.5)");
+}
+
+TEST_CASE("superellipse: the level power q makes Level^(1/q) convex")
+{
+	// LevelPower() promises that λ^(1/q) is convex. Check midpoint convexity on random pairs:
+	// g((x+y)/2) ≤ (g(x) + g(y))/2, up to rounding (1e-13 of the larger side).
+	const std::shared_ptr<const Shape> shapes[] = {MakeSuperellipse(1.0, 2.0, 4.0, 6.0), MakeSuperellipse(1.5, 0.7, 3.0, 5.0),
+	                                               MakeSuperellipse(1.2, 0.7, 2.5, 3.7), MakeSuperellipse(1.0, 1.0, 60.0, 60.0),
+	                                               SuperellipseShape::FromZeta(2.0, 1.0, 2.5)};
+	for (const auto& s : shapes)
+	{
+		CAPTURE(s->Describe());
+		const double q = s->LevelPower();
+		Random rng(21);
+		for (int i = 0; i < 2000; ++i)
+		{
+			const Vec2 x(rng.Uniform(-2, 2), rng.Uniform(-2, 2)), y(rng.Uniform(-2, 2), rng.Uniform(-2, 2));
+			const double gm = std::pow(s->Level(0.5 * (x + y)), 1.0 / q);
+			const double avg = 0.5 * (std::pow(s->Level(x), 1.0 / q) + std::pow(s->Level(y), 1.0 / q));
+			CHECK(gm <= avg * (1.0 + 1e-13));
+		}
+	}
+	// And the q promised is not just any q: for n = m = 60, λ itself (q = 1) is far from
+	// quadratic, while λ^(1/30) is homogeneous of degree 2: λ^(1/q)(t x) = t² λ^(1/q)(x).
+	const auto s60 = MakeSuperellipse(1.0, 1.0, 60.0, 60.0);
+	CHECK(s60->LevelPower() == 30.0);
+	const Vec2 x(0.3, -0.7);
+	CHECK(RelativeError(std::pow(s60->Level(2.0 * x), 1.0 / 30.0), 4.0 * std::pow(s60->Level(x), 1.0 / 30.0)) < 1e-13);
+}
+
+TEST_CASE("superellipse: RadiusAt matches the polar closed forms")
+{
+	Random rng(31);
+	// Ellipse: r(θ, L) = √L · ab / √(b² cos²θ + a² sin²θ); circle: r √L.
+	const double a = 3.0, b = 0.8;
+	const auto ellipse = MakeEllipse(a, b);
+	const auto circle = MakeCircle(1.7);
+	const auto needle = MakeEllipse(0.1, 100.0);
+	for (int i = 0; i < 300; ++i)
+	{
+		const double t = rng.Angle(), L = rng.LogUniform(1e-4, 1e4);
+		const Vec2 u(std::cos(t), std::sin(t));
+		CHECK(RelativeError(ellipse->RadiusAt(u, L), std::sqrt(L) * a * b / std::hypot(b * u.x, a * u.y)) < 1e-14);
+		CHECK(RelativeError(needle->RadiusAt(u, L), std::sqrt(L) * 0.1 * 100.0 / std::hypot(100.0 * u.x, 0.1 * u.y)) < 1e-14);
+		CHECK(RelativeError(circle->RadiusAt(u, L), 1.7 * std::sqrt(L)) < 1e-14);
+	}
+	// n = m: r(θ, L) = L^{1/n} (|cos θ / a|^n + |sin θ / b|^n)^{−1/n} (long double), so
+	// r(L) = r(1) L^{1/n}.
+	for (double n : {1.0, 1.5, 2.0, 3.3, 4.0, 60.0})
+	{
+		CAPTURE(n);
+		const auto s = MakeSuperellipse(1.3, 0.6, n, n);
+		for (int i = 0; i < 100; ++i)
+		{
+			const double t = rng.Angle(), L = rng.LogUniform(1e-3, 1e3);
+			const Vec2 u(std::cos(t), std::sin(t));
+			const long double r1 = std::pow(std::pow(std::fabs(u.x / 1.3L), (long double)n) + std::pow(std::fabs(u.y / 0.6L), (long double)n), -1.0L / n);
+			CHECK(RelativeError(s->RadiusAt(u, 1.0), double(r1)) < 1e-14);
+			CHECK(RelativeError(s->RadiusAt(u, L), double(r1 * std::pow((long double)L, 1.0L / n))) < 1e-14);
+		}
+	}
+	// ζ-form: level f^{1/ζ} means r(L) = r_f(L^ζ) = r(1) √L for every ζ (n = 2ζ).
+	for (double zeta : {0.5, 0.8, 1.0, 2.5})
+	{
+		CAPTURE(zeta);
+		const auto s = SuperellipseShape::FromZeta(2.0, 0.7, zeta);
+		for (int i = 0; i < 100; ++i)
+		{
+			const Vec2 u = Rotate(Rot(rng.Angle()), Vec2(1, 0));
+			const double L = rng.LogUniform(1e-3, 1e3);
+			CHECK(RelativeError(s->RadiusAt(u, L), s->RadiusAt(u, 1.0) * std::sqrt(L)) < 1e-14);
+		}
+	}
+	// n ≠ m along the axes: a L^{1/n} and b L^{1/m}.
+	const auto s = MakeSuperellipse(1.5, 2.5, 3.0, 5.0);
+	for (double L : {1e-3, 0.2, 1.0, 7.0, 1e3})
+	{
+		CHECK(RelativeError(s->RadiusAt(Vec2(1, 0), L), 1.5 * std::cbrt(L)) < 1e-14);
+		CHECK(RelativeError(s->RadiusAt(Vec2(-1, 0), L), 1.5 * std::cbrt(L)) < 1e-14);
+		CHECK(RelativeError(s->RadiusAt(Vec2(0, 1), L), 2.5 * std::pow(L, 0.2)) < 1e-14);
+		CHECK(RelativeError(s->RadiusAt(Vec2(0, -1), L), 2.5 * std::pow(L, 0.2)) < 1e-14);
+	}
+}
+
+TEST_CASE("superellipse: the zeta form is the same particle with level f^(1/zeta)")
+{
+	Random rng(41);
+	for (double zeta : {0.5, 0.8, 1.5, 3.0})
+	{
+		CAPTURE(zeta);
+		const auto z = SuperellipseShape::FromZeta(2.0, 0.7, zeta);
+		const auto f = MakeSuperellipse(2.0, 0.7, 2 * zeta, 2 * zeta);
+		for (int i = 0; i < 100; ++i)
+		{
+			const Vec2 x(rng.Uniform(-4, 4), rng.Uniform(-2, 2));
+			CHECK(RelativeError(z->Level(x), std::pow(f->Level(x), 1.0 / zeta)) < 1e-14);
+			const double t = rng.Angle();
+			CHECK(Distance(z->SurfacePoint(t), f->SurfacePoint(t)) <= 1e-15 * 2.0);
+		}
+		CHECK(RelativeError(z->Mass().area, f->Mass().area) < 1e-15);
+		CHECK(RelativeError(z->Mass().polarMoment, f->Mass().polarMoment) < 1e-15);
+		CHECK(RelativeError(z->BoundingRadius(), f->BoundingRadius()) < 1e-14);
+		const Vec2 d(0.3, -0.8);
+		CHECK(Distance(z->Support(d), f->Support(d)) <= 1e-14);
+	}
+}
+
+TEST_CASE("superellipse: derivatives on the axes follow the documented convention")
+{
+	// Exponent 1.5 on x: |x|^1.5 is differentiable with derivative 0 at x = 0, but its second
+	// derivative is infinite there; the documentation says it is reported as 0.
+	const auto s = MakeSuperellipse(1.0, 2.0, 1.5, 3.0);
+	for (double y : {-1.5, -0.4, 0.3, 1.9})
+	{
+		const LevelDerivatives d = s->Derivatives(Vec2(0.0, y));
+		const double Y = y / 2.0;
+		CHECK(d.value == doctest::Approx(std::fabs(Y * Y * Y)).epsilon(1e-15));
+		CHECK(d.gradient.x == 0.0);
+		CHECK(d.gradient.y == doctest::Approx(3.0 / 2.0 * Y * std::fabs(Y)).epsilon(1e-15));
+		CHECK(d.hessian.xx == 0.0);
+		CHECK(d.hessian.xy == 0.0);
+		CHECK(d.hessian.yy == doctest::Approx(6.0 / 4.0 * std::fabs(Y)).epsilon(1e-15));
+		// Next to the axis the true second derivative is large and finite (0.75 |x|^{-1/2}),
+		// so the convention is a choice, not a limit.
+		CHECK(s->Derivatives(Vec2(1e-10, y)).hessian.xx == doctest::Approx(0.75e5).epsilon(1e-12));
+	}
+	// Exponent 1 (a corner): the gradient on the axis is finite and a subgradient, the Hessian 0.
+	const auto diamond = MakeSuperellipse(1.3, 0.6, 1.0, 3.0);
+	const LevelDerivatives d1 = diamond->Derivatives(Vec2(0.0, 0.4));
+	CHECK(std::isfinite(d1.gradient.x));
+	CHECK(std::fabs(d1.gradient.x) <= 1.0 / 1.3);
+	CHECK(d1.hessian.xx == 0.0);
+	// Exponents ≥ 2 are twice differentiable on the axes and report the true values.
+	const auto e = MakeSuperellipse(2.0, 1.0, 2.0, 2.5);
+	const LevelDerivatives d2 = e->Derivatives(Vec2(0.7, 0.0));
+	CHECK(d2.hessian.xx == doctest::Approx(2.0 / 4.0).epsilon(1e-15));
+	CHECK(d2.hessian.yy == 0.0); // 2.5·1.5 |Y|^{0.5} → 0
+	CHECK(d2.gradient.y == 0.0);
+	// The origin of a ζ-form is finite (the level is 0 there).
+	const LevelDerivatives d0 = SuperellipseShape::FromZeta(1.0, 2.0, 0.8)->Derivatives(Vec2(0.0, 0.0));
+	CHECK(d0.value == 0.0);
+	CHECK(IsFinite(d0.gradient));
+	CHECK(std::isfinite(d0.hessian.xx));
+	// The ζ-form on an axis with 2ζ < 2: finite, with the same convention.
+	const LevelDerivatives dz = SuperellipseShape::FromZeta(1.0, 2.0, 0.8)->Derivatives(Vec2(0.0, 1.0));
+	CHECK(dz.gradient.x == 0.0);
+	CHECK(dz.hessian.xx == 0.0);
+	CHECK(std::isfinite(dz.hessian.yy));
+}
+
+TEST_CASE("superellipse: closed-form support points lie on the surface with the normal along d")
+{
+	// n = m uses Hölder's closed form, n ≠ m a Lagrange root: both should be exact to rounding,
+	// so the point is on the level-1 set to 1e-13 and the outward normal ∇λ is parallel to d
+	// to 1e-12 (sin of the angle between them).
+	const std::shared_ptr<const Shape> shapes[] = {MakeCircle(1.7), MakeEllipse(3.0, 0.8), MakeEllipse(0.1, 100.0),
+	                                               MakeSuperellipse(2.0, 1.0, 4.0, 4.0), MakeSuperellipse(1.5, 2.5, 3.0, 5.0),
+	                                               MakeSuperellipse(1.2, 0.7, 2.5, 3.7), MakeSuperellipse(0.9, 1.6, 7.3, 2.0),
+	                                               MakeSuperellipse(1.0, 2.0, 1.5, 1.5), MakeSuperellipse(1.0, 0.5, 60.0, 60.0),
+	                                               SuperellipseShape::FromZeta(2.0, 1.0, 1.5)};
+	Random rng(51);
+	for (const auto& s : shapes)
+	{
+		CAPTURE(s->Describe());
+		for (int i = 0; i < 200; ++i)
+		{
+			const Vec2 d = rng.LogUniform(1e-3, 1e3) * Rotate(Rot(rng.Angle()), Vec2(1, 0));
+			const Vec2 p = s->Support(d);
+			CAPTURE(d.x);
+			CAPTURE(d.y);
+			CHECK(RelativeError(s->Level(p), 1.0) < 1e-13);
+			const Vec2 nrm = Normalize(s->Gradient(p));
+			CHECK(std::fabs(Cross(nrm, Normalize(d))) < 1e-12);
+			CHECK(Dot(nrm, d) > 0.0);
+		}
+		// Along the axes the support point is the axis end (a, 0), (0, b), ...
+		const auto* se = dynamic_cast<const SuperellipseShape*>(s.get());
+		REQUIRE(se != nullptr);
+		CHECK(Distance(s->Support(Vec2(2, 0)), Vec2(se->A(), 0)) <= 1e-15 * se->A());
+		CHECK(Distance(s->Support(Vec2(-2, 0)), Vec2(-se->A(), 0)) <= 1e-15 * se->A());
+		CHECK(Distance(s->Support(Vec2(0, 3)), Vec2(0, se->B())) <= 1e-15 * se->B());
+		CHECK(Distance(s->Support(Vec2(0, -3)), Vec2(0, -se->B())) <= 1e-15 * se->B());
+	}
+	// n = m = 1 (a rhombus): the support point is a vertex.
+	const auto rhombus = MakeSuperellipse(2.0, 1.0, 1.0, 1.0);
+	CHECK(Distance(rhombus->Support(Vec2(1.0, 0.3)), Vec2(2.0, 0.0)) == 0.0);
+	CHECK(Distance(rhombus->Support(Vec2(0.3, -1.0)), Vec2(0.0, -1.0)) == 0.0);
+	CHECK(Distance(rhombus->Support(Vec2(-1.0, 2.1)), Vec2(0.0, 1.0)) == 0.0); // b·2.1 > a·1
+}
+
+TEST_CASE("superellipse: an exponent of 1 makes corners on the axes, reported by CornerAngles")
+{
+	// |x/a| + |y/b|^m has a tangent discontinuity where x = 0, i.e. at polar angles ±π/2, and
+	// |y/b| one at 0 and π (reported as −π: CornerAngles are in [−π, π)). Shape::CornerAngles
+	// promises the polar angles "where the surface has corners" (sampling splits there and puts a
+	// sample on each corner). Exponents above 1 have no corners (the tangent is continuous).
+	auto hasCorner = [](const Shape& s, double theta) {
+		for (double c : s.CornerAngles())
+			if (std::fabs(std::remainder(c - theta, 2.0 * kPi)) < 1e-15) return true;
+		return false;
+	};
+	const auto xCorner = MakeSuperellipse(1.3, 0.6, 1.0, 3.0);
+	CHECK(xCorner->CornerAngles().size() == 2);
+	CHECK(hasCorner(*xCorner, 0.5 * kPi));
+	CHECK(hasCorner(*xCorner, -0.5 * kPi));
+	const auto rhombus = MakeSuperellipse(2.0, 1.0, 1.0, 1.0);
+	CHECK(rhombus->CornerAngles().size() == 4);
+	for (double t : {-kPi, -0.5 * kPi, 0.0, 0.5 * kPi})
+	{
+		CAPTURE(t);
+		CHECK(hasCorner(*rhombus, t));
+		// ... and so the rhombus's vertices are among its surface samples.
+		const auto smp = rhombus->Samples(8);
+		const Vec2 vertex = rhombus->SurfacePoint(t);
+		double nearest = 1e300;
+		for (const Vec2& p : smp->point) nearest = std::min(nearest, Distance(p, vertex));
+		CHECK(nearest < 1e-12);
+	}
+	CHECK(MakeSuperellipse(1.3, 0.6, 1.5, 3.0)->CornerAngles().empty());
+	CHECK(MakeEllipse(1.3, 0.6)->CornerAngles().empty());
+}
