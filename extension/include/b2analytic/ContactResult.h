@@ -24,7 +24,8 @@ enum class SolveMethod : std::uint8_t
 	newton,     ///< Newton–Raphson on the common level (paper eqs. 6–17)
 	minMax,     ///< the min–max (Perram–Wertheim) characterisation C = max_μ min_X ψA + μψB
 	grid,       ///< the grid method on surface samples with local refinement (paper section 3)
-	overlapAxis ///< coincident centres: the axis of least overlap (no level point exists)
+	overlapAxis,   ///< coincident centres: the axis of least overlap (no level point exists)
+	separatingAxis ///< analytic shape against a polygon: the best separating axis of the supports
 };
 
 /// Which solver the caller wants.
@@ -37,7 +38,7 @@ enum class MethodChoice : std::uint8_t
 
 /// "converged", "converged_after_fallback" or "failed".
 const char* StatusName(SolveStatus status);
-/// "closed_form", "newton", "min_max", "grid", "overlap_axis" or "none".
+/// "closed_form", "newton", "min_max", "grid", "overlap_axis", "separating_axis" or "none".
 const char* MethodName(SolveMethod method);
 
 /// Result of a level solve: the common level of two particles, or the one-sided scale of A.

@@ -10,3 +10,6 @@
 #include "b2analytic/CommonLevel.h"
 #include "b2analytic/Contact.h"
 #include "b2analytic/TimeOfImpact.h"
+#include "b2analytic/SurfaceQueries.h"
+#include "b2analytic/PolygonContact.h"
+#include "b2analytic/ContactManifold.h"

@@ -1,5 +1,6 @@
 // b2analytic: contact points, separation, and the shape-pair dispatch table.
 #include "b2analytic/Contact.h"
+#include "b2analytic/SurfaceQueries.h"
 
 #include "numerics/RootFinding.h"
 
@@ -12,57 +13,12 @@ namespace b2a
 
 namespace
 {
-// First s ≥ 0 at which the line X + s·dir crosses the shape's own surface (leaving it when X is
-// inside, entering it when X is outside); −1 when it never does.
-double LineCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir)
-{
-	const double own = shape.SurfaceLevel();
-	auto f = [&](double s) { return shape.Level(ToBody(pose, X + s * dir)) - own; };
-	const double f0 = f(0.0);
-	if (f0 == 0.0)
-		return 0.0;
-	// Beyond sMax the line is outside the bounding circle for good.
-	const double sMax = Distance(X, pose.p) + 1.01 * shape.BoundingRadius();
-	if (!std::isfinite(f0) || !std::isfinite(sMax))
-		return -1.0;
-	if (shape.IsConvex())
-	{
-		if (f0 < 0.0)
-			return FindRootBrent(f, 0.0, sMax, f0, f(sMax), 0.0, 200).x;
-		// Outside: λ is quasi-convex along the line, so its minimum tells whether it enters.
-		const ScalarResult m = MinimizeBrent(f, 0.0, sMax, 1e-12, 1e-15 * sMax, 200);
-		if (!(m.fx <= 0.0))
-			return -1.0;
-		return FindRootBrent(f, 0.0, m.x, f0, m.fx, 0.0, 200).x;
-	}
-	// Non-convex: march in steps finer than the surface samples, then bracket.
-	const double h = std::min(sMax / 64.0, 0.5 * shape.Samples()->maxSpacing);
-	double s0 = 0.0, fa = f0;
-	for (double s1 = h;; s1 += h)
-	{
-		s1 = std::min(s1, sMax);
-		const double fb = f(s1);
-		if ((fb <= 0.0) != (fa <= 0.0))
-			return FindRootBrent(f, s0, s1, fa, fb, 0.0, 200).x;
-		if (s1 >= sMax)
-			return -1.0;
-		s0 = s1;
-		fa = fb;
-	}
-}
-
 // The surface point of a shape on the ray from its centre towards X (always exists).
 Vec2 RadialPoint(const Shape& shape, const Pose& pose, Vec2 X)
 {
 	const Vec2 x = ToBody(pose, X);
 	const double theta = LengthSquared(x) > 0.0 ? std::atan2(x.y, x.x) : 0.0;
 	return ToWorld(pose, shape.SurfacePoint(theta));
-}
-
-// World support point of a posed shape along the world direction d.
-Vec2 WorldSupport(const Shape& shape, const Pose& pose, Vec2 d)
-{
-	return ToWorld(pose, shape.Support(InvRotate(pose.q, d)));
 }
 
 // Coincident centres: no level point lies between them. Use the axis along which the overlap
@@ -134,12 +90,15 @@ ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, c
 	c.normal = n;
 
 	// A: leave A along +n when X is inside it, else enter it along −n.
-	const bool insideA = a.Level(ToBody(pa, X)) <= a.SurfaceLevel();
-	const double sa = LineCrossing(a, pa, X, insideA ? n : -n);
+	// Beyond sMax the line has left the bounding circle for good.
+	const double sMaxA = Distance(X, pa.p) + 1.01 * a.BoundingRadius();
+	const bool insideA = TestPoint(a, pa, X);
+	const double sa = FirstSurfaceCrossing(a, pa, X, insideA ? n : -n, sMaxA);
 	c.pointA = sa >= 0.0 ? X + (insideA ? sa : -sa) * n : RadialPoint(a, pa, X);
 	// B: leave B along −n when X is inside it, else enter it along +n.
-	const bool insideB = b.Level(ToBody(pb, X)) <= b.SurfaceLevel();
-	const double sb = LineCrossing(b, pb, X, insideB ? -n : n);
+	const double sMaxB = Distance(X, pb.p) + 1.01 * b.BoundingRadius();
+	const bool insideB = TestPoint(b, pb, X);
+	const double sb = FirstSurfaceCrossing(b, pb, X, insideB ? -n : n, sMaxB);
 	c.pointB = sb >= 0.0 ? X + (insideB ? -sb : sb) * n : RadialPoint(b, pb, X);
 
 	c.separation = Dot(c.pointB - c.pointA, n);

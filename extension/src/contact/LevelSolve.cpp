@@ -27,6 +27,7 @@ const char* MethodName(SolveMethod method)
 	case SolveMethod::minMax: return "min_max";
 	case SolveMethod::grid: return "grid";
 	case SolveMethod::overlapAxis: return "overlap_axis";
+	case SolveMethod::separatingAxis: return "separating_axis";
 	default: return "none";
 	}
 }

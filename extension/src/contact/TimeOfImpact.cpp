@@ -1,5 +1,6 @@
 // b2analytic: time of impact by conservative advancement and a bracketed root.
 #include "b2analytic/TimeOfImpact.h"
+#include "b2analytic/SurfaceQueries.h"
 
 #include "numerics/RootFinding.h"
 
@@ -54,10 +55,6 @@ std::vector<Vec2> WorldSamples(const Shape& s, const Pose& pose, int count)
 	return out;
 }
 
-Vec2 WorldSupport(const Shape& shape, const Pose& pose, Vec2 d)
-{
-	return ToWorld(pose, shape.Support(InvRotate(pose.q, d)));
-}
 } // namespace
 
 TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb, double tMax,

@@ -1,0 +1,103 @@
+// b2analytic: analytic fixtures on Box2D bodies.
+//
+// How it works (and why this way):
+//  - An analytic fixture is an ordinary b2Fixture whose b2Shape is an internal subclass of
+//    b2PolygonShape. Its virtual functions answer for the true shape: ComputeAABB gives the
+//    tight AABB (the broad phase works on it), ComputeMass the analytic area, centroid and
+//    inertia (so the body's mass data is exact), TestPoint and RayCast the exact answers (so
+//    b2World::RayCast, QueryAABB + TestPoint and b2Fixture::RayCast work unchanged).
+//  - Its polygon vertices are a convex polygon inscribed in the true shape (up to 7 points on
+//    the surface). Box2D uses them only for continuous collision (b2TimeOfImpact) and sensors
+//    (b2TestOverlap). An inscribed proxy never reaches the time of impact before the true shape
+//    does, so when Box2D's TOI solver stops a fast particle, the true shapes already touch and
+//    the contact below pushes them apart: particles do not tunnel through thin static walls.
+//    Sensors, however, report overlap of the inscribed polygons, slightly less than the truth.
+//  - The narrow phase is replaced by registering our own b2Contact subclass with Box2D's contact
+//    registers (b2Contact::AddType) for (polygon, polygon), (polygon, circle), (edge, polygon)
+//    and (chain, polygon), once, before main() runs. Its Evaluate computes the analytic contact
+//    (ComputeContact between analytic shapes, the separating axis against circles' and polygons'
+//    and edges' true geometry) and converts it into a b2Manifold before Box2D matches point ids,
+//    decides touching and calls the listener. So BeginContact/EndContact/PreSolve/PostSolve,
+//    warm starting and TOI all follow the true shapes and PreSolve stays free for the user.
+//    (The alternative, rewriting the manifold in a PreSolve listener, runs only when proxies
+//    already touch, after Begin/End were decided on the proxies, and takes PreSolve away from
+//    the user; we rejected it.) Pairs of plain Box2D shapes call the very functions Box2D's own
+//    contacts call (b2CollidePolygons and friends), so plain scenes step bit-identically.
+//  - The fixture's and body's user data stay the user's: the analytic data lives in the shape.
+//
+// What is allowed: create and destroy analytic fixtures like any fixture, while the world is
+// not locked (not inside Step or a callback); destroy bodies and worlds as usual (everything is
+// released). What is not: creating one on a null body or in a locked world (throws).
+#pragma once
+
+#include "b2analytic/ContactResult.h"
+#include "b2analytic/Shape.h"
+
+#include <box2d/b2_draw.h>
+#include <box2d/b2_fixture.h>
+#include <box2d/b2_settings.h>
+
+#include <stdexcept>
+
+class b2Body;
+class b2World;
+
+namespace b2a
+{
+
+/// Thrown when the Box2D API is used in a way the adapter cannot honour (null body, locked world).
+class MisuseError : public std::logic_error
+{
+public:
+	using std::logic_error::logic_error;
+};
+
+/// The analytic part of a fixture definition.
+struct AnalyticFixtureDef
+{
+	/// The shape (required). Shapes are immutable and may be shared by many fixtures.
+	ShapePtr shape;
+	/// Pose of the shape in the body's frame (default: at the body origin, unrotated).
+	Pose local;
+	/// Surfaces within this distance of each other's extreme count as a flat patch and get two
+	/// manifold points (see BuildContactManifold). Default: half of Box2D's linear slop.
+	double patchTolerance = 0.5 * b2_linearSlop;
+	/// A flat patch gets two points only when it is wider than this fraction of the particle's
+	/// bounding radius; narrower ones are curved contacts and keep one point (see
+	/// BuildContactManifold). Blocky superellipses (n ≥ 4) have patches wider than half their
+	/// size, ellipses of aspect up to about 10 narrower than a quarter.
+	double patchMinWidth = 0.25;
+	/// Options of the contact solvers.
+	SolverOptions solver;
+};
+
+/// Create an analytic fixture on `body`. Every field of `def` is honoured (density, friction,
+/// restitution, restitution threshold, filter, sensor flag, user data) except `def.shape`,
+/// which must be null: the analytic shape takes its place. With density > 0 the body's mass
+/// data comes from the analytic area, centroid and second moment. Throws InvalidParameter for a
+/// missing shape, a non-null def.shape or a shape too small for Box2D's tolerances, and
+/// MisuseError for a null body or a locked world.
+b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const AnalyticFixtureDef& analytic);
+
+/// Shorthand: an analytic fixture at the body origin with the given density.
+b2Fixture* CreateAnalyticFixture(b2Body* body, ShapePtr shape, float density);
+
+/// The analytic shape of a fixture, or null for a plain Box2D fixture.
+const Shape* GetAnalyticShape(const b2Fixture* fixture);
+
+/// World pose of a fixture's analytic shape (the body transform times the local pose).
+/// Throws InvalidParameter when the fixture is not analytic.
+Pose GetAnalyticPose(const b2Fixture* fixture);
+
+/// The analytic contact of two fixtures at their current poses, as the adapter computes it
+/// (also for pairs Box2D has no contact for yet). For plain pairs it returns a failed result.
+ContactResult ComputeFixtureContact(const b2Fixture* a, const b2Fixture* b);
+
+/// Debug drawing of a whole world through the user's own b2Draw: plain shapes as Box2D draws
+/// them, analytic fixtures as their true outlines (hearts included) with `outlineVertices`
+/// points, in Box2D's colours; then joints, AABBs, pairs and centres of mass as the draw flags
+/// ask (through b2World::DebugDraw with the shape bit cleared). b2World::DebugDraw alone would
+/// draw analytic fixtures as their inscribed proxy polygons.
+void DrawWorld(b2World* world, b2Draw* draw, int outlineVertices = 48);
+
+} // namespace b2a

@@ -1,0 +1,254 @@
+// b2analytic: the analytic narrow phase inside Box2D's contact pipeline.
+#include "box2d/AnalyticContact.h"
+
+#include "box2d/AnalyticProxyShape.h"
+
+#include "b2analytic/Contact.h"
+#include "b2analytic/ContactManifold.h"
+#include "b2analytic/PolygonContact.h"
+#include "b2analytic/SuperellipseShape.h"
+
+#include <box2d/b2_block_allocator.h>
+#include <box2d/b2_body.h>
+#include <box2d/b2_chain_shape.h>
+#include <box2d/b2_circle_shape.h>
+#include <box2d/b2_collision.h>
+#include <box2d/b2_edge_shape.h>
+#include <box2d/b2_fixture.h>
+#include <box2d/b2_polygon_shape.h>
+
+#include <new>
+
+namespace b2a
+{
+
+namespace
+{
+// Why Evaluate and not a PreSolve listener: Evaluate runs inside b2Contact::Update before Box2D
+// matches point ids (so impulses carry over), decides touching (so Begin/EndContact follow the
+// true shapes) and calls PreSolve (which stays the user's). It also runs in the TOI sub-steps.
+// Registration must precede every contact of the four types anywhere in the process, because
+// Box2D destroys a contact through the register of its shape types: so it runs during static
+// initialisation, in the translation unit every adapter function lives in.
+const bool g_installed = AnalyticContact::Install();
+
+Vec2 V(const b2Vec2& v) { return Vec2(v.x, v.y); }
+b2Vec2 F(Vec2 v) { return b2Vec2(float(v.x), float(v.y)); }
+
+// Write a manifold in Box2D's e_faceA form: normal and the point on A in A's frame, points on B
+// in B's frame. Ids 0 and 1 follow the patch's ends along the tangent, so they are stable while
+// the contact persists and Box2D carries impulses between steps. Box2D subtracts each shape's
+// m_radius from the separation; an analytic side's proxy has a skin (for the time of impact)
+// that the true surface does not, so its point moves into the body by that skin, which Box2D's
+// subtraction then cancels (skinA, skinB: 0 for plain shapes, whose skin is real).
+void Write(const ContactManifold& m, b2Manifold* out, const b2Transform& xfA, const b2Transform& xfB, double skinA,
+           double skinB)
+{
+	out->pointCount = 0;
+	if (m.count == 0)
+		return;
+	out->type = b2Manifold::e_faceA;
+	out->localNormal = b2MulT(xfA.q, F(m.normal));
+	out->localPoint = b2MulT(xfA, F(m.pointA - skinA * m.normal));
+	for (int k = 0; k < m.count; ++k)
+	{
+		b2ManifoldPoint& p = out->points[k];
+		p.localPoint = b2MulT(xfB, F(m.points[k].pointB + skinB * m.normal));
+		p.normalImpulse = 0.0f;
+		p.tangentImpulse = 0.0f;
+		p.id.key = 0;
+		p.id.cf.indexA = uint8(m.points[k].id);
+		p.id.cf.typeA = b2ContactFeature::e_vertex;
+	}
+	out->pointCount = m.count;
+}
+
+// Box2D polygon vertices (core, without skin) of a fixture's polygon.
+int PolygonVertices(const b2PolygonShape* s, Vec2* v)
+{
+	for (int j = 0; j < s->m_count; ++j)
+		v[j] = V(s->m_vertices[j]);
+	return s->m_count;
+}
+} // namespace
+
+bool AnalyticContact::Install()
+{
+	static const bool done = [] {
+		if (!s_initialized)
+		{
+			InitializeRegisters();
+			s_initialized = true;
+		}
+		AddType(&Create<Kind::polygonPolygon>, &Destroy, b2Shape::e_polygon, b2Shape::e_polygon);
+		AddType(&Create<Kind::polygonCircle>, &Destroy, b2Shape::e_polygon, b2Shape::e_circle);
+		AddType(&Create<Kind::edgePolygon>, &Destroy, b2Shape::e_edge, b2Shape::e_polygon);
+		AddType(&Create<Kind::chainPolygon>, &Destroy, b2Shape::e_chain, b2Shape::e_polygon);
+		return true;
+	}();
+	return done;
+}
+
+AnalyticContact::AnalyticContact(b2Fixture* a, int32 indexA, b2Fixture* b, int32 indexB, Kind kind)
+	: b2Contact(a, indexA, b, indexB), m_kind(kind)
+{
+	if (kind == Kind::polygonCircle && AnalyticProxyShape::From(a->GetShape()))
+	{
+		const b2CircleShape* circle = static_cast<const b2CircleShape*>(b->GetShape());
+		if (circle->m_radius > 0.0f)
+			m_circle = MakeCircle(circle->m_radius);
+	}
+}
+
+template <AnalyticContact::Kind kind>
+b2Contact* AnalyticContact::Create(b2Fixture* a, int32 indexA, b2Fixture* b, int32 indexB, b2BlockAllocator* allocator)
+{
+	void* memory = allocator->Allocate(sizeof(AnalyticContact));
+	return new (memory) AnalyticContact(a, indexA, b, indexB, kind);
+}
+
+void AnalyticContact::Destroy(b2Contact* contact, b2BlockAllocator* allocator)
+{
+	static_cast<AnalyticContact*>(contact)->~AnalyticContact();
+	allocator->Free(contact, sizeof(AnalyticContact));
+}
+
+void AnalyticContact::EvaluatePlain(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB)
+{
+	const b2Shape* sa = m_fixtureA->GetShape();
+	const b2Shape* sb = m_fixtureB->GetShape();
+	switch (m_kind)
+	{
+	case Kind::polygonPolygon:
+		b2CollidePolygons(manifold, static_cast<const b2PolygonShape*>(sa), xfA, static_cast<const b2PolygonShape*>(sb), xfB);
+		break;
+	case Kind::polygonCircle:
+		b2CollidePolygonAndCircle(manifold, static_cast<const b2PolygonShape*>(sa), xfA, static_cast<const b2CircleShape*>(sb), xfB);
+		break;
+	case Kind::edgePolygon:
+		b2CollideEdgeAndPolygon(manifold, static_cast<const b2EdgeShape*>(sa), xfA, static_cast<const b2PolygonShape*>(sb), xfB);
+		break;
+	case Kind::chainPolygon:
+	{
+		b2EdgeShape edge;
+		static_cast<const b2ChainShape*>(sa)->GetChildEdge(&edge, m_indexA);
+		b2CollideEdgeAndPolygon(manifold, &edge, xfA, static_cast<const b2PolygonShape*>(sb), xfB);
+		break;
+	}
+	}
+}
+
+void AnalyticContact::Evaluate(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB)
+{
+	const b2Shape* sa = m_fixtureA->GetShape();
+	const b2Shape* sb = m_fixtureB->GetShape();
+	const AnalyticProxyShape* pa = AnalyticProxyShape::From(sa);
+	const AnalyticProxyShape* pb = m_kind == Kind::polygonCircle ? nullptr : AnalyticProxyShape::From(sb);
+	if (!pa && !pb)
+	{
+		EvaluatePlain(manifold, xfA, xfB);
+		return;
+	}
+	manifold->pointCount = 0;
+	const Pose bodyA = ToPose(xfA), bodyB = ToPose(xfB);
+	ContactResult c;
+	ManifoldSide sideA, sideB;
+	double radii = 0.0, tolerance = 0.0, minWidth = 0.0;
+	Vec2 vertices[b2_maxPolygonVertices];
+
+	if (pa && pb)
+	{
+		// Analytic against analytic: the contact core, warm-started from the last step.
+		const Pose poseA = pa->WorldPose(xfA), poseB = pb->WorldPose(xfB);
+		c = ComputeContact(*pa->Data().shape, poseA, *pb->Data().shape, poseB, MethodChoice::automatic, pa->Data().solver, &m_warm);
+		sideA = {pa->Data().shape.get(), poseA};
+		sideB = {pb->Data().shape.get(), poseB};
+		tolerance = std::min(pa->Data().patchTolerance, pb->Data().patchTolerance);
+		minWidth = std::min(pa->Data().patchMinWidth, pb->Data().patchMinWidth);
+	}
+	else if (pa && m_kind == Kind::polygonCircle)
+	{
+		// Analytic against a Box2D circle: the circle as an analytic circle at its centre. Box2D
+		// subtracts the circle's radius itself, so B's manifold point is the centre.
+		if (!m_circle)
+			return;
+		const b2CircleShape* circle = static_cast<const b2CircleShape*>(sb);
+		const Pose poseA = pa->WorldPose(xfA);
+		const Pose poseC(ToWorld(bodyB, V(circle->m_p)), bodyB.q);
+		c = ComputeContact(*pa->Data().shape, poseA, *m_circle, poseC, MethodChoice::automatic, pa->Data().solver, &m_warm);
+		if (!c.Ok())
+			return;
+		c.pointB = poseC.p;
+		radii = circle->m_radius;
+		sideA = {pa->Data().shape.get(), poseA};
+		sideB.point = true;
+		tolerance = pa->Data().patchTolerance;
+		minWidth = pa->Data().patchMinWidth;
+	}
+	else
+	{
+		// One analytic side against a Box2D polygon, edge or chain link: the separating axis
+		// against its core geometry; Box2D adds the skin radius.
+		const bool analyticIsA = pa != nullptr;
+		const AnalyticProxyShape* proxy = analyticIsA ? pa : pb;
+		const b2Shape* plain = analyticIsA ? sb : sa;
+		const Pose poseAnalytic = proxy->WorldPose(analyticIsA ? xfA : xfB);
+		const Pose posePlain = analyticIsA ? bodyB : bodyA;
+		int count = 0;
+		if (m_kind == Kind::polygonPolygon)
+		{
+			count = PolygonVertices(static_cast<const b2PolygonShape*>(plain), vertices);
+		}
+		else
+		{
+			b2EdgeShape edge;
+			if (m_kind == Kind::chainPolygon)
+				static_cast<const b2ChainShape*>(sa)->GetChildEdge(&edge, m_indexA);
+			else
+				edge = *static_cast<const b2EdgeShape*>(sa);
+			vertices[0] = V(edge.m_vertex1);
+			vertices[1] = V(edge.m_vertex2);
+			count = 2;
+			if (edge.m_oneSided)
+			{
+				// One-sided edges (chain links) collide only on their right side, as in Box2D.
+				const Vec2 e = vertices[1] - vertices[0];
+				const Vec2 front(e.y, -e.x);
+				if (Dot(ToBody(posePlain, poseAnalytic.p) - vertices[0], front) < 0.0)
+					return;
+			}
+		}
+		const Vec2* guess = m_hasNormal ? &m_lastNormal : nullptr;
+		c = ComputePolygonContact(*proxy->Data().shape, poseAnalytic, vertices, count, posePlain, guess);
+		if (!c.Ok())
+			return;
+		m_lastNormal = c.normal;
+		m_hasNormal = true;
+		for (int j = 0; j < count; ++j)
+			vertices[j] = ToWorld(posePlain, vertices[j]);
+		radii = plain->m_radius;
+		tolerance = proxy->Data().patchTolerance;
+		minWidth = proxy->Data().patchMinWidth;
+		ManifoldSide analytic{proxy->Data().shape.get(), poseAnalytic};
+		ManifoldSide polygon;
+		polygon.vertices = vertices;
+		polygon.count = count;
+		if (analyticIsA)
+		{
+			sideA = analytic;
+			sideB = polygon;
+		}
+		else
+		{
+			c = FlipContact(c);
+			sideA = polygon;
+			sideB = analytic;
+		}
+	}
+	if (!c.Ok())
+		return; // a failed solve (never NaN) gives no contact this step
+	Write(BuildContactManifold(c, sideA, sideB, tolerance, minWidth, radii, &m_patch), manifold, xfA, xfB, pa ? sa->m_radius : 0.0,
+	      pb ? sb->m_radius : 0.0);
+}
+
+} // namespace b2a

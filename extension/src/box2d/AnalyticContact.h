@@ -1,0 +1,51 @@
+// b2analytic: the b2Contact that replaces Box2D's narrow phase (internal to the adapter).
+#pragma once
+
+#include "b2analytic/ContactManifold.h"
+#include "b2analytic/ContactResult.h"
+#include "b2analytic/Shape.h"
+
+#include <box2d/b2_contact.h>
+
+namespace b2a
+{
+
+/// Box2D's contact for (polygon, polygon), (polygon, circle), (edge, polygon) and (chain,
+/// polygon) pairs, registered in place of Box2D's own. Pairs of plain shapes call exactly the
+/// collision function Box2D's contact would; pairs with an analytic fixture get the analytic
+/// contact as a b2Manifold (type e_faceA, one or two points, stable ids).
+class AnalyticContact final : public b2Contact
+{
+public:
+	/// Which of Box2D's contact types this one stands in for.
+	enum class Kind
+	{
+		polygonPolygon,
+		polygonCircle,
+		edgePolygon,
+		chainPolygon
+	};
+
+	/// Register with Box2D (idempotent). Runs before main(); calling it again is harmless.
+	static bool Install();
+
+	void Evaluate(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB) override;
+
+private:
+	AnalyticContact(b2Fixture* a, int32 indexA, b2Fixture* b, int32 indexB, Kind kind);
+	template <Kind kind>
+	static b2Contact* Create(b2Fixture* a, int32 indexA, b2Fixture* b, int32 indexB, b2BlockAllocator* allocator);
+	static void Destroy(b2Contact* contact, b2BlockAllocator* allocator);
+
+	// The plain Box2D path, exactly as Box2D's own contact classes do it.
+	void EvaluatePlain(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB);
+
+	Kind m_kind;
+	WarmStart m_warm;       // Newton's previous solution (analytic pairs)
+	Vec2 m_lastNormal;      // previous normal (analytic against polygon or edge), world
+	bool m_hasNormal = false;
+	ShapePtr m_circle;      // the analytic circle standing in for a Box2D circle fixture
+	ManifoldCache m_patch;  // where last step's flat patch ended
+};
+
+} // namespace b2a

@@ -1,0 +1,240 @@
+// b2analytic: creating analytic fixtures, looking them up, drawing them.
+#include "b2analytic/AnalyticFixture.h"
+
+#include "box2d/AnalyticContact.h"
+#include "box2d/AnalyticProxyShape.h"
+
+#include "b2analytic/Contact.h"
+#include "b2analytic/PolygonContact.h"
+
+#include <box2d/b2_body.h>
+#include <box2d/b2_chain_shape.h>
+#include <box2d/b2_circle_shape.h>
+#include <box2d/b2_edge_shape.h>
+#include <box2d/b2_world.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace b2a
+{
+
+namespace
+{
+// Convex hull (Andrew's monotone chain), counter-clockwise, of up to a few points.
+std::vector<Vec2> ConvexHull(std::vector<Vec2> p)
+{
+	std::sort(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+	std::vector<Vec2> h(2 * p.size());
+	size_t k = 0;
+	for (size_t i = 0; i < p.size(); ++i)
+	{
+		while (k >= 2 && Cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0.0) --k;
+		h[k++] = p[i];
+	}
+	for (size_t i = p.size() - 1, t = k + 1; i-- > 0;)
+	{
+		while (k >= t && Cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0.0) --k;
+		h[k++] = p[i];
+	}
+	h.resize(k > 0 ? k - 1 : 0);
+	return h;
+}
+
+const AnalyticProxyShape* Proxy(const b2Fixture* fixture)
+{
+	return fixture ? AnalyticProxyShape::From(fixture->GetShape()) : nullptr;
+}
+
+b2Vec2 F(Vec2 v) { return b2Vec2(float(v.x), float(v.y)); }
+} // namespace
+
+b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const AnalyticFixtureDef& analytic)
+{
+	AnalyticContact::Install(); // also links the registration into every program that creates one
+	if (!body)
+		throw MisuseError("CreateAnalyticFixture: the body is null");
+	if (body->GetWorld()->IsLocked())
+		throw MisuseError("CreateAnalyticFixture: the world is locked (inside Step or a world callback); "
+		                  "create fixtures between steps");
+	if (!analytic.shape)
+		throw InvalidParameter("CreateAnalyticFixture: field 'shape' is null (an analytic shape is required)", "shape");
+	if (def.shape)
+		throw InvalidParameter("CreateAnalyticFixture: field 'def.shape' must be null (the analytic shape takes its place)", "def.shape");
+	const Pose& local = analytic.local;
+	if (!IsFinite(local.p) || !std::isfinite(local.q.c) || !std::isfinite(local.q.s))
+		throw InvalidParameter("CreateAnalyticFixture", "local", "must be a finite pose", local.p.x + local.p.y + local.q.c + local.q.s);
+	if (!std::isfinite(analytic.patchTolerance) || analytic.patchTolerance < 0.0)
+		throw InvalidParameter("CreateAnalyticFixture", "patchTolerance", "must be finite and >= 0", analytic.patchTolerance);
+	if (!std::isfinite(analytic.patchMinWidth) || analytic.patchMinWidth < 0.0)
+		throw InvalidParameter("CreateAnalyticFixture", "patchMinWidth", "must be finite and >= 0", analytic.patchMinWidth);
+	const Shape& shape = *analytic.shape;
+	// Box2D's tolerances are absolute (linear slop 0.005 length units): a smaller particle
+	// cannot be resolved; the fix is a smaller length unit (see the README on millimetres).
+	if (!(shape.BoundingRadius() >= 2.0 * b2_linearSlop))
+		throw InvalidParameter("CreateAnalyticFixture", "shape", "must be at least 2 * b2_linearSlop (0.01 length units) in bounding radius "
+		                       "(use smaller length units), bounding radius",
+		                       shape.BoundingRadius());
+
+	// The proxy: Box2D's time of impact stops bodies when proxy cores come within
+	// totalRadius − 3·slop and expects its position solver to leave them at totalRadius − slop,
+	// so the proxy needs a skin like Box2D's polygons (b2_polygonRadius). Its core is the polygon
+	// through surface points moved inwards by that skin along their normals: the rounded proxy
+	// then lies inside the true shape (for convex shapes), never reaching a wall before it.
+	const double skin = b2_polygonRadius;
+	const auto samples = shape.Samples(AnalyticProxyShape::kMaxProxyVertices);
+	std::vector<Vec2> points;
+	bool insetFits = true;
+	for (Vec2 p : samples->point)
+	{
+		const Vec2 q = p - skin * Normalize(shape.Gradient(p));
+		insetFits = insetFits && shape.Level(q) < shape.SurfaceLevel() && Dot(q, p) > 0.0;
+		points.push_back(q);
+	}
+	if (!insetFits)
+	{
+		// Thinner than two skins somewhere: the surface points themselves, without a skin.
+		points.clear();
+		for (Vec2 p : samples->point)
+			points.push_back(p);
+	}
+	for (Vec2& p : points)
+		p = ToWorld(local, p);
+	if (!shape.IsConvex())
+		points = ConvexHull(points);
+	auto* data = new AnalyticFixtureData;
+	data->shape = analytic.shape;
+	data->local = local;
+	data->patchTolerance = analytic.patchTolerance;
+	data->patchMinWidth = analytic.patchMinWidth * shape.BoundingRadius();
+	data->solver = analytic.solver;
+	AnalyticProxyShape proxy(data); // owns the first reference; the fixture's clone adds its own
+	proxy.m_radius = insetFits ? float(skin) : 0.0f;
+	const int count = std::min(int(points.size()), AnalyticProxyShape::kMaxProxyVertices);
+	proxy.m_count = count;
+	for (int i = 0; i < count; ++i)
+	{
+		proxy.m_vertices[i] = F(points[i]);
+		const Vec2 e = points[(i + 1) % count] - points[i];
+		proxy.m_normals[i] = F(Normalize(Vec2(e.y, -e.x)));
+	}
+	proxy.m_centroid = F(ToWorld(local, shape.Mass().centroid));
+
+	b2FixtureDef d = def;
+	d.shape = &proxy;
+	return body->CreateFixture(&d);
+}
+
+b2Fixture* CreateAnalyticFixture(b2Body* body, ShapePtr shape, float density)
+{
+	b2FixtureDef def;
+	def.density = density;
+	AnalyticFixtureDef analytic;
+	analytic.shape = std::move(shape);
+	return CreateAnalyticFixture(body, def, analytic);
+}
+
+const Shape* GetAnalyticShape(const b2Fixture* fixture)
+{
+	const AnalyticProxyShape* p = Proxy(fixture);
+	return p ? p->Data().shape.get() : nullptr;
+}
+
+Pose GetAnalyticPose(const b2Fixture* fixture)
+{
+	const AnalyticProxyShape* p = Proxy(fixture);
+	if (!p)
+		throw InvalidParameter("GetAnalyticPose: field 'fixture' is not an analytic fixture", "fixture");
+	return p->WorldPose(fixture->GetBody()->GetTransform());
+}
+
+ContactResult ComputeFixtureContact(const b2Fixture* a, const b2Fixture* b)
+{
+	const AnalyticProxyShape* pa = Proxy(a);
+	const AnalyticProxyShape* pb = Proxy(b);
+	if (pa && pb)
+		return ComputeContact(*pa->Data().shape, GetAnalyticPose(a), *pb->Data().shape, GetAnalyticPose(b));
+	ContactResult failed;
+	failed.failure = "ComputeFixtureContact needs two analytic fixtures";
+	return failed;
+}
+
+void DrawWorld(b2World* world, b2Draw* draw, int outlineVertices)
+{
+	if (!world || !draw)
+		throw MisuseError("DrawWorld: the world and the b2Draw must not be null");
+	const uint32 flags = draw->GetFlags();
+	if (flags & b2Draw::e_shapeBit)
+	{
+		std::vector<b2Vec2> outline;
+		for (b2Body* b = world->GetBodyList(); b; b = b->GetNext())
+		{
+			const b2Transform& xf = b->GetTransform();
+			// Box2D's own colour code for body states.
+			b2Color color(0.9f, 0.7f, 0.7f);
+			if (b->GetType() == b2_dynamicBody && b->GetMass() == 0.0f) color = b2Color(1.0f, 0.0f, 0.0f);
+			else if (!b->IsEnabled()) color = b2Color(0.5f, 0.5f, 0.3f);
+			else if (b->GetType() == b2_staticBody) color = b2Color(0.5f, 0.9f, 0.5f);
+			else if (b->GetType() == b2_kinematicBody) color = b2Color(0.5f, 0.5f, 0.9f);
+			else if (!b->IsAwake()) color = b2Color(0.6f, 0.6f, 0.6f);
+			for (b2Fixture* f = b->GetFixtureList(); f; f = f->GetNext())
+			{
+				if (const AnalyticProxyShape* p = Proxy(f))
+				{
+					const Shape& s = *p->Data().shape;
+					const Pose pose = p->WorldPose(xf);
+					const auto samples = s.Samples(std::max(8, outlineVertices));
+					outline.clear();
+					for (Vec2 v : samples->point)
+						outline.push_back(F(ToWorld(pose, v)));
+					draw->DrawSolidPolygon(outline.data(), int32(outline.size()), color);
+					continue;
+				}
+				switch (f->GetType())
+				{
+				case b2Shape::e_circle:
+				{
+					const b2CircleShape* c = static_cast<const b2CircleShape*>(f->GetShape());
+					draw->DrawSolidCircle(b2Mul(xf, c->m_p), c->m_radius, b2Mul(xf.q, b2Vec2(1.0f, 0.0f)), color);
+					break;
+				}
+				case b2Shape::e_edge:
+				{
+					const b2EdgeShape* e = static_cast<const b2EdgeShape*>(f->GetShape());
+					draw->DrawSegment(b2Mul(xf, e->m_vertex1), b2Mul(xf, e->m_vertex2), color);
+					break;
+				}
+				case b2Shape::e_chain:
+				{
+					const b2ChainShape* c = static_cast<const b2ChainShape*>(f->GetShape());
+					for (int32 i = 1; i < c->m_count; ++i)
+						draw->DrawSegment(b2Mul(xf, c->m_vertices[i - 1]), b2Mul(xf, c->m_vertices[i]), color);
+					break;
+				}
+				case b2Shape::e_polygon:
+				{
+					const b2PolygonShape* poly = static_cast<const b2PolygonShape*>(f->GetShape());
+					b2Vec2 v[b2_maxPolygonVertices];
+					for (int32 i = 0; i < poly->m_count; ++i)
+						v[i] = b2Mul(xf, poly->m_vertices[i]);
+					draw->DrawSolidPolygon(v, poly->m_count, color);
+					break;
+				}
+				default:
+					break;
+				}
+			}
+		}
+	}
+	// Joints, AABBs, pairs and centres of mass: Box2D's own drawing without its shapes.
+	if (flags & ~uint32(b2Draw::e_shapeBit))
+	{
+		world->SetDebugDraw(draw);
+		draw->SetFlags(flags & ~uint32(b2Draw::e_shapeBit));
+		world->DebugDraw();
+		draw->SetFlags(flags);
+	}
+}
+
+} // namespace b2a

@@ -1,0 +1,85 @@
+// b2analytic: the b2Shape an analytic fixture carries (internal to the adapter).
+#pragma once
+
+#include "b2analytic/AnalyticFixture.h"
+
+#include <box2d/b2_polygon_shape.h>
+
+#include <atomic>
+
+namespace b2a
+{
+
+/// What an analytic fixture knows beyond Box2D: shared by the fixture's shape and every copy of
+/// it, counted, and released with the last copy (fixture destruction, body destruction and
+/// world destruction all destroy the fixture's shape).
+struct AnalyticFixtureData
+{
+	std::atomic<int> references{1};
+	ShapePtr shape;
+	Pose local;
+	double patchTolerance = 0.0;
+	double patchMinWidth = 0.0; // absolute: the fraction times the bounding radius
+	SolverOptions solver;
+};
+
+/// A b2PolygonShape whose virtual functions answer for the analytic shape, and whose vertices
+/// with its skin radius (b2_polygonRadius, as Box2D's polygons) make a rounded polygon inside it
+/// (for Box2D's time of impact and sensors). Box2D subtracts that skin from manifold
+/// separations; the contact adds it back (see AnalyticContact).
+///
+/// Box2D frees a fixture's polygon with sizeof(b2PolygonShape), so this class adds no data
+/// member: it keeps its data pointer in m_normals[7], a slot Box2D never reads because the
+/// proxy has at most 7 vertices, and a tag in m_vertices[7] to recognise itself.
+class AnalyticProxyShape final : public b2PolygonShape
+{
+public:
+	/// Most vertices of the inscribed proxy polygon (slot 7 holds the data).
+	static constexpr int kMaxProxyVertices = 7;
+
+	/// A proxy for `data`, taking over the caller's reference.
+	explicit AnalyticProxyShape(AnalyticFixtureData* data);
+	/// Copy, sharing (and counting) the data.
+	AnalyticProxyShape(const AnalyticProxyShape& other);
+	AnalyticProxyShape& operator=(const AnalyticProxyShape&) = delete;
+	~AnalyticProxyShape() override;
+
+	b2Shape* Clone(b2BlockAllocator* allocator) const override;
+	int32 GetChildCount() const override { return 1; }
+	bool TestPoint(const b2Transform& transform, const b2Vec2& p) const override;
+	bool RayCast(b2RayCastOutput* output, const b2RayCastInput& input, const b2Transform& transform, int32 childIndex) const override;
+	void ComputeAABB(b2AABB* aabb, const b2Transform& transform, int32 childIndex) const override;
+	void ComputeMass(b2MassData* massData, float density) const override;
+
+	/// The shared analytic data.
+	const AnalyticFixtureData& Data() const { return *m_dataPointer(); }
+	/// World pose of the analytic shape for a body transform.
+	Pose WorldPose(const b2Transform& transform) const;
+	/// The proxy if `shape` is one, else null.
+	static const AnalyticProxyShape* From(const b2Shape* shape);
+
+private:
+	AnalyticFixtureData* m_dataPointer() const;
+	void Store(AnalyticFixtureData* data);
+};
+
+static_assert(sizeof(AnalyticProxyShape) == sizeof(b2PolygonShape), "Box2D frees shapes with the base class size");
+static_assert(sizeof(void*) <= sizeof(b2Vec2), "the data pointer must fit in one b2Vec2 slot");
+
+/// Pose of a Box2D transform, in double precision.
+inline Pose ToPose(const b2Transform& xf)
+{
+	Pose p;
+	p.p = Vec2(xf.p.x, xf.p.y);
+	p.q.c = xf.q.c;
+	p.q.s = xf.q.s;
+	return p;
+}
+
+/// Composition: body pose times a local pose.
+inline Pose Compose(const Pose& body, const Pose& local)
+{
+	return Pose(ToWorld(body, local.p), Mul(body.q, local.q));
+}
+
+} // namespace b2a

@@ -1,0 +1,245 @@
+// b2analytic: one- and two-point manifolds from a contact.
+#include "b2analytic/ContactManifold.h"
+
+#include "b2analytic/SurfaceQueries.h"
+#include "numerics/RootFinding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace b2a
+{
+
+namespace
+{
+struct Interval
+{
+	double lo = 0.0, hi = 0.0;
+	bool valid = false;
+};
+
+// Tangent extent (coordinates along t from `origin`) of the arc of an analytic convex shape
+// whose points lie within tol of its extreme along d. Each end is bracketed in polar angle by
+// steps that double from a small one, starting from the end found last step when `cache` has
+// one (it moves little between steps), else from the support point; Brent's method finishes.
+Interval AnalyticFace(const Shape& shape, const Pose& pose, Vec2 d, Vec2 origin, Vec2 t, double tol, double* cache, bool& cached)
+{
+	Interval out;
+	const Vec2 db = InvRotate(pose.q, d);
+	const Vec2 q = shape.Support(db);
+	const double h = Dot(q, db);
+	const double ts = std::atan2(q.y, q.x);
+	// excess(θ) = (h − x(θ)·d) − tol: the depth below the extreme, less tol; ≤ 0 on the face.
+	auto excess = [&](double theta) { return (h - Dot(shape.SurfacePoint(theta), db)) - tol; };
+	// Angles are measured from ts, unwrapped into (−π, π].
+	auto relative = [&](double theta) { return std::remainder(theta - ts, 2.0 * kPi); };
+	double ends[2];
+	for (int side = 0; side < 2; ++side)
+	{
+		const double dir = side == 0 ? -1.0 : 1.0;
+		double start = 0.0;
+		if (cached && dir * relative(cache[side]) > 0.0)
+			start = relative(cache[side]);
+		double inner = 0.0, fin = excess(ts), outer = 0.0, fout = 0.0;
+		if (!(fin <= 0.0))
+			return out;
+		double step = cached ? 1e-3 : kPi / 64.0;
+		const double fs = start != 0.0 ? excess(ts + start) : fin;
+		if (fs <= 0.0)
+		{
+			inner = start;
+			fin = fs;
+			for (outer = start + dir * step, fout = excess(ts + outer); fout <= 0.0; outer += dir * step, fout = excess(ts + outer))
+			{
+				inner = outer;
+				fin = fout;
+				step *= 2.0;
+				if (std::fabs(outer) > kPi)
+					return out; // the whole half turns within tol: not a patch we can bound
+			}
+		}
+		else
+		{
+			outer = start;
+			fout = fs;
+			for (inner = start - dir * step; dir * inner > 0.0; inner -= dir * step)
+			{
+				fin = excess(ts + inner);
+				if (fin <= 0.0)
+					break;
+				outer = inner;
+				fout = fin;
+				step *= 2.0;
+			}
+			if (dir * inner <= 0.0)
+			{
+				inner = 0.0;
+				fin = excess(ts);
+			}
+		}
+		const double theta = ts + FindRootBrent([&](double x) { return excess(ts + x); }, inner, outer, fin, fout, 1e-10, 100).x;
+		cache[side] = theta;
+		ends[side] = Dot(ToWorld(pose, shape.SurfacePoint(theta)) - origin, t);
+	}
+	cached = true;
+	out.lo = std::min(ends[0], ends[1]);
+	out.hi = std::max(ends[0], ends[1]);
+	out.valid = true;
+	return out;
+}
+
+// Tangent extent of the part of a polygon or segment within tol of its extreme along d.
+Interval PolygonFace(const Vec2* w, int count, Vec2 d, Vec2 origin, Vec2 t, double tol)
+{
+	Interval out;
+	double h = -std::numeric_limits<double>::infinity();
+	for (int j = 0; j < count; ++j)
+		h = std::max(h, Dot(w[j], d));
+	out.lo = std::numeric_limits<double>::infinity();
+	out.hi = -out.lo;
+	auto add = [&](Vec2 p) {
+		const double s = Dot(p - origin, t);
+		out.lo = std::min(out.lo, s);
+		out.hi = std::max(out.hi, s);
+	};
+	const int edges = count == 2 ? 1 : count;
+	for (int j = 0; j < count; ++j)
+		if (Dot(w[j], d) >= h - tol)
+			add(w[j]);
+	for (int j = 0; j < edges; ++j)
+	{
+		// Where an edge crosses the level h − tol, the patch ends.
+		const Vec2 p = w[j], r = w[(j + 1) % count];
+		const double fp = Dot(p, d) - (h - tol), fr = Dot(r, d) - (h - tol);
+		if ((fp > 0.0) != (fr > 0.0))
+			add(p + (fp / (fp - fr)) * (r - p));
+	}
+	out.valid = out.lo <= out.hi;
+	return out;
+}
+
+// Whether the arc of an analytic shape around its support point along d may be a flat patch.
+// Flat means nearly zero curvature where it touches: a blocky superellipse's side (its
+// curvature vanishes on the axis), not an ellipse, which is curved everywhere (κ·R = b/a) and
+// whose rocking must follow that curvature. So the curvature κ there must be below a tenth of
+// the shape's bounding radius's inverse, and then the arc, which stays within tol over about
+// 2·√(2·tol/κ), must be able to reach half of minWidth (a margin for arcs that are not parabolas)
+// before the costly search for its ends runs.
+bool MayBeFlat(const Shape& shape, const Pose& pose, Vec2 d, double tol, double minWidth)
+{
+	const Vec2 q = shape.Support(InvRotate(pose.q, d));
+	const LevelDerivatives ld = shape.Derivatives(q);
+	const double g = Length(ld.gradient);
+	if (!(g > 0.0) || !std::isfinite(g))
+		return true;
+	const Vec2 t = Perp(ld.gradient) / g;
+	const double kappa = Dot(t, ld.hessian * t) / g;
+	if (!(kappa > 0.0) || !std::isfinite(kappa))
+		return true;
+	if (kappa * shape.BoundingRadius() > 0.1)
+		return false;
+	return 2.0 * std::sqrt(2.0 * tol / kappa) >= 0.5 * minWidth;
+}
+
+Interval Face(const ManifoldSide& side, Vec2 d, Vec2 origin, Vec2 t, double tol, double minWidth, double* cache, bool& cached)
+{
+	if (side.point)
+		return {};
+	if (side.shape)
+	{
+		if (!side.shape->IsConvex() || (side.shape->IsSmoothConvex() && !MayBeFlat(*side.shape, side.pose, d, tol, minWidth)))
+			return {};
+		return AnalyticFace(*side.shape, side.pose, d, origin, t, tol, cache, cached);
+	}
+	if (side.vertices && side.count >= 2)
+		return PolygonFace(side.vertices, side.count, d, origin, t, tol);
+	return {};
+}
+
+// B's surface point on the line through p along n that is lowest along n (B's near side).
+bool LowestAlong(const ManifoldSide& b, Vec2 p, Vec2 n, Vec2& out)
+{
+	if (b.shape)
+	{
+		// Start beyond B's support plane along −n (outside B) and enter along +n.
+		const double low = -Dot(WorldSupport(*b.shape, b.pose, -n), n);
+		const double margin = 1e-3 * b.shape->BoundingRadius() + 1e-12;
+		const Vec2 start = p + (low - margin - Dot(p, n)) * n;
+		const double sMax = 2.0 * b.shape->BoundingRadius() + Distance(start, b.pose.p) + margin;
+		const double s = FirstSurfaceCrossing(*b.shape, b.pose, start, n, sMax);
+		if (s < 0.0)
+			return false;
+		out = start + s * n;
+		return true;
+	}
+	// Polygon or segment: the smallest line parameter among the edge intersections.
+	const Vec2 t = Perp(n);
+	const double tp = Dot(p, t);
+	double best = std::numeric_limits<double>::infinity();
+	const int edges = b.count == 2 ? 1 : b.count;
+	for (int j = 0; j < edges; ++j)
+	{
+		const Vec2 u = b.vertices[j], v = b.vertices[(j + 1) % b.count];
+		const double fu = Dot(u, t) - tp, fv = Dot(v, t) - tp;
+		if ((fu > 0.0) == (fv > 0.0) && fu != 0.0 && fv != 0.0)
+			continue;
+		const double denom = fu - fv;
+		const Vec2 x = denom != 0.0 ? u + (fu / denom) * (v - u) : (Dot(u, n) < Dot(v, n) ? u : v);
+		best = std::min(best, Dot(x - p, n));
+	}
+	if (!std::isfinite(best))
+		return false;
+	out = p + best * n;
+	return true;
+}
+} // namespace
+
+ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide& a, const ManifoldSide& b, double tol,
+                                     double minWidth, double radii, ManifoldCache* cache)
+{
+	ManifoldCache scratch;
+	if (!cache)
+		cache = &scratch;
+	ContactManifold m;
+	m.normal = c.normal;
+	m.pointA = c.pointA;
+	const double sep0 = Dot(c.pointB - c.pointA, c.normal) - radii;
+	if (!c.Ok() || !(sep0 <= 0.0))
+		return m;
+	m.count = 1;
+	m.points[0] = {c.pointB, sep0, 0};
+	const Vec2 n = c.normal, t = Perp(n), origin = c.pointA;
+	const Interval fa = Face(a, n, origin, t, tol, minWidth, cache->endsA, cache->validA);
+	if (!fa.valid)
+		return m;
+	const Interval fb = Face(b, -n, origin, t, tol, minWidth, cache->endsB, cache->validB);
+	if (!fb.valid)
+		return m;
+	const double lo = std::max(fa.lo, fb.lo), hi = std::min(fa.hi, fb.hi);
+	if (!(hi - lo > std::max(tol, minWidth)))
+		return m; // a curved contact: one point
+	ManifoldPoint ends[2];
+	int kept = 0;
+	for (double s : {lo, hi})
+	{
+		Vec2 q;
+		if (!LowestAlong(b, origin + s * t, n, q))
+			continue;
+		const double sep = Dot(q - c.pointA, n) - radii;
+		if (sep <= 0.0)
+		{
+			ends[kept] = {q, sep, kept};
+			++kept;
+		}
+	}
+	if (kept == 2)
+	{
+		m.count = 2;
+		m.points[0] = ends[0];
+		m.points[1] = ends[1];
+	}
+	return m;
+}
+
+} // namespace b2a
