@@ -183,7 +183,7 @@ json Answer(const json& request, json& id)
 		}
 		if (!level.Ok())
 			throw RequestError(std::string("solver failed (") + MethodName(level.method) + "): " + level.failure);
-		c = ContactFromLevel(sa, a.pose, sb, b.pose, level, touching);
+		c = ContactFromLevel(sa, a.pose, sb, b.pose, level, touching, mode == "scale_a");
 		c.normal = level.normal; // these modes report ∇λA's direction at the point
 	}
 	if (!c.Ok())

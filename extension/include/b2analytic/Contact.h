@@ -23,14 +23,18 @@ ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, con
                              MethodChoice method = MethodChoice::automatic, const SolverOptions& options = {},
                              WarmStart* warm = nullptr);
 
-/// The contact built from a level solution: normal from the unit level gradients at the point
-/// (the average of ∇λA/|∇λA| and −∇λB/|∇λB|, which agree at a tangency), points where the line
-/// through the point along the normal meets each surface, separation along the normal.
-/// `touching` is the level solve's verdict; where rounding makes the separation's sign disagree
-/// with it (|separation| at rounding level), the separation is reported as 0 or the smallest
-/// positive double.
+/// The contact built from a level solution. The normal is the mean of A's outward and B's
+/// inward unit normals at the point (they agree at a tangency); where the point is a corner of
+/// one shape (a heart's tip) the other's normal; and where both normals point the same way (one
+/// centre inside the other) B's inward normal, with `pointOnB` saying the point lies on B's
+/// surface (the grid method). pointA is A's extreme point along the normal on the line through
+/// the point, pointB is B's extreme point against it (or, where the line misses a far-away
+/// particle, the surface point towards the level point), and the separation is measured along
+/// the normal between them. `touching` is the level solve's verdict; where rounding makes the
+/// separation's sign disagree with it (|separation| at rounding level), the separation is
+/// reported as 0 or the smallest positive double.
 ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const LevelResult& level,
-                               bool touching);
+                               bool touching, bool pointOnB = false);
 
 /// The same contact seen from the other side: normal flipped, points swapped.
 ContactResult FlipContact(const ContactResult& c);

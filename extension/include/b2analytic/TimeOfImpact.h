@@ -35,6 +35,9 @@ struct TimeOfImpactResult
 	bool hit = false;                         ///< the particles touch within [0, tMax]
 	double time = 0.0;                        ///< first touching time (tMax when they do not touch)
 	ContactResult contact;                    ///< the contact at `time`
+
+	/// True unless the search failed.
+	bool Ok() const { return status != SolveStatus::failed; }
 };
 
 /// First time in [0, tMax] at which A and B touch, by conservative advancement: the distance

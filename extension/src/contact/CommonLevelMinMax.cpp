@@ -17,6 +17,8 @@ namespace
 // descends and a backtracking search converges. Returns ψA − ψB at the minimiser.
 double InnerMinimum(const PairFrame& f, double nu, Vec2& xi, int& evaluations)
 {
+	// Steps may cover half the pair's size or half the distance between the centres.
+	const double trust = std::max(0.5, 0.5 * Length(f.Xi(f.b.pose.p) - f.Xi(f.a.pose.p)));
 	const double mu = std::exp(nu);
 	for (int it = 0; it < 100; ++it)
 	{
@@ -39,8 +41,8 @@ double InnerMinimum(const PairFrame& f, double nu, Vec2& xi, int& evaluations)
 		const double len = std::max(std::fabs(step.x), std::fabs(step.y));
 		if (!(len > 0.0) || !std::isfinite(len))
 			break;
-		if (len > 0.5)
-			step = (0.5 / len) * step;
+		if (len > trust)
+			step = (trust / len) * step;
 		const double slope = Dot(g, step);
 		double alpha = 1.0;
 		bool accepted = false;
@@ -112,7 +114,7 @@ LevelResult SolveCommonLevelMinMax(const Shape& a, const Pose& pa, const Shape& 
 	result.iterations = root.iterations;
 
 	// Polish with Newton from the min–max answer: it is inside Newton's basin now.
-	LevelResult polished = RunNewton(f, NewtonMode::common, xi, root.x, options);
+	LevelResult polished = RunNewton(f, xi, root.x, options);
 	if (polished.Ok() && Length(f.Xi(polished.point) - xi) < 1e-3)
 	{
 		polished.method = SolveMethod::minMax;

@@ -7,7 +7,10 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace b2a
 {
@@ -24,16 +27,16 @@ struct NewtonPoint
 	bool finite = false;
 };
 
-NewtonPoint Evaluate(const PairFrame& f, NewtonMode mode, double psiB0, Vec2 xi, double m)
+NewtonPoint Evaluate(const PairFrame& f, Vec2 xi, double m)
 {
 	NewtonPoint p;
 	p.xi = xi;
 	p.m = m;
 	p.A = f.Eval(f.a, xi, true);
 	p.B = f.Eval(f.b, xi, true);
-	const double mu = mode == NewtonMode::common ? std::exp(m) : m;
+	const double mu = std::exp(m);
 	const Vec2 r12 = p.A.grad + mu * p.B.grad;
-	const double r3 = mode == NewtonMode::common ? p.A.psi - p.B.psi : p.B.psi - psiB0;
+	const double r3 = p.A.psi - p.B.psi;
 	p.r = Eigen::Vector3d(r12.x, r12.y, r3);
 	const double gradScale = LengthSquared(p.A.grad) + mu * mu * LengthSquared(p.B.grad) + 1e-300;
 	const double levelScale = p.A.psi * p.A.psi + p.B.psi * p.B.psi + 1e-300;
@@ -43,12 +46,12 @@ NewtonPoint Evaluate(const PairFrame& f, NewtonMode mode, double psiB0, Vec2 xi,
 }
 } // namespace
 
-LevelResult RunNewton(const PairFrame& f, NewtonMode mode, Vec2 xi, double m, const SolverOptions& options)
+LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions& options)
 {
 	LevelResult result;
 	result.method = SolveMethod::newton;
-	const double psiB0 = f.PsiOfLevel(1.0); // B's own surface, in its level units
-	NewtonPoint p = Evaluate(f, mode, psiB0, xi, m);
+	const double trust = std::max(0.5, 0.5 * Length(f.Xi(f.b.pose.p) - f.Xi(f.a.pose.p)));
+	NewtonPoint p = Evaluate(f, xi, m);
 	const int cap = std::max(1, options.maxIterations);
 	for (int it = 1; it <= cap; ++it)
 	{
@@ -63,20 +66,20 @@ LevelResult RunNewton(const PairFrame& f, NewtonMode mode, Vec2 xi, double m, co
 		{
 			const double gb2 = LengthSquared(p.B.grad);
 			const double muLs = gb2 > 0.0 ? -Dot(p.A.grad, p.B.grad) / gb2 : 0.0;
-			const double mLs = mode == NewtonMode::common ? (muLs > 0.0 ? std::log(muLs) : p.m) : muLs;
+			const double mLs = muLs > 0.0 ? std::log(muLs) : p.m;
 			if (mLs != p.m && std::isfinite(mLs))
 			{
-				const NewtonPoint q = Evaluate(f, mode, psiB0, p.xi, mLs);
+				const NewtonPoint q = Evaluate(f, p.xi, mLs);
 				if (q.finite && q.relative < p.relative)
 					p = q;
 			}
 		}
-		const double mu = mode == NewtonMode::common ? std::exp(p.m) : p.m;
+		const double mu = std::exp(p.m);
 		// Jacobian of (∇ψA + μ∇ψB, third equation) with respect to (ξ, m).
 		Eigen::Matrix3d J;
 		const Sym22 H = p.A.hess + mu * p.B.hess;
-		const Vec2 dmu = mode == NewtonMode::common ? mu * p.B.grad : p.B.grad;
-		const Vec2 row3 = mode == NewtonMode::common ? p.A.grad - p.B.grad : p.B.grad;
+		const Vec2 dmu = mu * p.B.grad;
+		const Vec2 row3 = p.A.grad - p.B.grad;
 		J << H.xx, H.xy, dmu.x,
 		     H.xy, H.yy, dmu.y,
 		     row3.x, row3.y, 0.0;
@@ -89,11 +92,12 @@ LevelResult RunNewton(const PairFrame& f, NewtonMode mode, Vec2 xi, double m, co
 			return result;
 		}
 		Eigen::Vector3d delta = lu.solve(-p.r);
-		// Trust region: at most half the pair's size in ξ, and a factor e² in μ.
+		// Trust region: at most half the pair's size or of the distance between the centres
+		// (whichever is larger) in ξ, and a factor e² in μ.
 		double limit = 1.0;
 		const double stepXi = std::max(std::fabs(delta[0]), std::fabs(delta[1]));
-		if (stepXi > 0.5) limit = std::min(limit, 0.5 / stepXi);
-		const double mLimit = mode == NewtonMode::common ? 2.0 : 2.0 * std::max(1.0, std::fabs(p.m));
+		if (stepXi > trust) limit = std::min(limit, trust / stepXi);
+		const double mLimit = 2.0;
 		if (std::fabs(delta[2]) > mLimit) limit = std::min(limit, mLimit / std::fabs(delta[2]));
 		delta *= limit;
 		// Backtracking line search on the residual with row weights frozen at the current point
@@ -107,7 +111,7 @@ LevelResult RunNewton(const PairFrame& f, NewtonMode mode, Vec2 xi, double m, co
 		bool accepted = false;
 		for (int k = 0; k < 40; ++k, alpha *= 0.5)
 		{
-			next = Evaluate(f, mode, psiB0, p.xi + alpha * Vec2(delta[0], delta[1]), p.m + alpha * delta[2]);
+			next = Evaluate(f, p.xi + alpha * Vec2(delta[0], delta[1]), p.m + alpha * delta[2]);
 			if (next.finite && merit(next) <= (1.0 - 1e-4 * alpha) * merit0)
 			{
 				accepted = true;
@@ -133,12 +137,11 @@ LevelResult RunNewton(const PairFrame& f, NewtonMode mode, Vec2 xi, double m, co
 	}
 	result.status = SolveStatus::converged;
 	result.failure = "";
-	// Common levels are reported relative to the own levels (C ≤ 1 ⇔ touching); the one-sided
-	// scale is A's level in A's own units, as the grid method reports it.
-	result.level = mode == NewtonMode::common ? p.A.lambda : p.A.lambda / PairFrame::LevelUnit(f.a);
+	// Common levels are reported relative to the own levels (C ≤ 1 ⇔ touching).
+	result.level = p.A.lambda;
 	result.point = f.World(p.xi);
 	result.normal = Normalize(p.A.grad);
-	result.multiplier = mode == NewtonMode::common ? std::exp(p.m) : p.m;
+	result.multiplier = std::exp(p.m);
 	return result;
 }
 
@@ -182,31 +185,7 @@ LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& 
 		result.failure = "coincident centres: no common-level point between them";
 		return result;
 	}
-	return RunNewton(f, NewtonMode::common, xi, std::log(mu), options);
-}
-
-LevelResult SolveScaleANewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)
-{
-	LevelResult result;
-	result.method = SolveMethod::newton;
-	if (!a.IsSmoothConvex() || !b.IsSmoothConvex())
-	{
-		result.failure = "Newton needs smooth, strictly convex shapes (superellipse exponents >= 2)";
-		return result;
-	}
-	const PairFrame f(a, pa, b, pb);
-	// Start on B's surface on the ray from B's centre towards A's centre; the multiplier is
-	// negative when A's centre is inside B (the tangency is then internal).
-	const Vec2 towardsA = ToBody(pb, pa.p);
-	const double theta = LengthSquared(towardsA) > 0.0 ? std::atan2(towardsA.y, towardsA.x) : 0.0;
-	const Vec2 xi = f.Xi(ToWorld(pb, b.SurfacePoint(theta)));
-	const double ga = Length(f.Eval(f.a, xi, false).grad), gb = Length(f.Eval(f.b, xi, false).grad);
-	double mu = (ga > 0.0 && gb > 0.0) ? ga / gb : 1.0;
-	if (b.Level(towardsA) < b.SurfaceLevel())
-		mu = -mu;
-	LevelResult r = RunNewton(f, NewtonMode::oneSided, xi, mu, options);
-	return r;
+	return RunNewton(f, xi, std::log(mu), options);
 }
 
 } // namespace b2a
-

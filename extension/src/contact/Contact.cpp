@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace b2a
 {
@@ -67,10 +68,48 @@ bool Coincident(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb)
 {
 	return !(Distance(pa.p, pb.p) > 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius()));
 }
+
+// True when the body point lies on one of the shape's corners (the heart's tip and notch, the
+// vertices of exponent-1 superellipses): there the gradient has no meaningful direction.
+bool AtCorner(const Shape& s, Vec2 x)
+{
+	if (s.CornerAngles().empty() || !(LengthSquared(x) > 0.0))
+		return false;
+	const double theta = std::atan2(x.y, x.x);
+	for (double corner : s.CornerAngles())
+		if (std::fabs(std::remainder(theta - corner, 2.0 * kPi)) < 1e-7)
+			return true;
+	return false;
+}
+
+// The contact normal at X, from A to B: the mean of A's outward and B's inward unit normals,
+// which agree at a tangency. A shape whose corner X is gives no normal; the other's is used.
+// When the two normals point the same way, one particle's centre lies inside the other and X is
+// B's surface point nearest A (pointOnB, the grid method): A leaves B fastest through that
+// point, so the normal is B's inward one there.
+Vec2 ContactNormal(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Vec2 X, bool pointOnB)
+{
+	const Vec2 xa = ToBody(pa, X), xb = ToBody(pb, X);
+	const Vec2 na = AtCorner(a, xa) ? Vec2() : Normalize(Rotate(pa.q, a.Gradient(xa)));
+	const Vec2 nb = AtCorner(b, xb) ? Vec2() : Normalize(Rotate(pb.q, b.Gradient(xb)));
+	const bool hasA = LengthSquared(na) > 0.0, hasB = LengthSquared(nb) > 0.0;
+	Vec2 n;
+	if (hasA && hasB)
+		n = Dot(na, nb) < 0.0 ? Normalize(na - nb) : (pointOnB ? -nb : na);
+	else if (hasA)
+		n = na;
+	else if (hasB)
+		n = -nb;
+	if (!(LengthSquared(n) > 0.0))
+		n = Normalize(pb.p - pa.p);
+	if (!(LengthSquared(n) > 0.0))
+		n = Vec2(1.0, 0.0);
+	return n;
+}
 } // namespace
 
 ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const LevelResult& level,
-                               bool touching)
+                               bool touching, bool pointOnB)
 {
 	ContactResult c;
 	c.status = level.status;
@@ -79,27 +118,46 @@ ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, c
 	c.level = level.level;
 	c.point = level.point;
 	const Vec2 X = level.point;
-	// Symmetric normal: the mean of A's outward normal and B's inward normal at X.
-	const Vec2 na = Normalize(Rotate(pa.q, a.Gradient(ToBody(pa, X))));
-	const Vec2 nb = Normalize(Rotate(pb.q, b.Gradient(ToBody(pb, X))));
-	Vec2 n = Normalize(na - nb);
-	if (LengthSquared(n) == 0.0)
-		n = LengthSquared(na) > 0.0 ? na : (LengthSquared(nb) > 0.0 ? -nb : Normalize(pb.p - pa.p));
-	if (LengthSquared(n) == 0.0)
-		n = Vec2(1.0, 0.0);
-	c.normal = n;
+	c.normal = ContactNormal(a, pa, b, pb, X, pointOnB);
+	const Vec2 n = c.normal;
 
-	// A: leave A along +n when X is inside it, else enter it along −n.
-	// Beyond sMax the line has left the bounding circle for good.
-	const double sMaxA = Distance(X, pa.p) + 1.01 * a.BoundingRadius();
-	const bool insideA = TestPoint(a, pa, X);
-	const double sa = FirstSurfaceCrossing(a, pa, X, insideA ? n : -n, sMaxA);
-	c.pointA = sa >= 0.0 ? X + (insideA ? sa : -sa) * n : RadialPoint(a, pa, X);
-	// B: leave B along −n when X is inside it, else enter it along +n.
-	const double sMaxB = Distance(X, pb.p) + 1.01 * b.BoundingRadius();
-	const bool insideB = TestPoint(b, pb, X);
-	const double sb = FirstSurfaceCrossing(b, pb, X, insideB ? -n : n, sMaxB);
-	c.pointB = sb >= 0.0 ? X + (insideB ? -sb : sb) * n : RadialPoint(b, pb, X);
+	// The points: for a convex shape, where the line through X along n leaves A last (A's
+	// extreme along +n on it) and enters B first (B's extreme along −n): from X itself when the
+	// shape contains X, else entering the line from beyond the shape. For a non-convex shape the
+	// line may cross it more than once (a heart's lobes around a particle in its notch): there
+	// the crossing nearest X counts, leaving the shape along the direction when X is inside it,
+	// entering it behind X when X is outside.
+	auto extreme = [&](const Shape& s, const Pose& ps, Vec2 dir) -> Vec2 {
+		// A point on the surface to 1e-10 of the level (the grid's points are) is its own
+		// crossing; at a corner, where the level grows like |x|^{2/3} (a heart's tip), rounding
+		// of the point's coordinates moves the level by up to 1e-6.
+		const double own = s.SurfaceLevel();
+		const Vec2 x = ToBody(ps, X);
+		const double level = s.Level(x);
+		const double onSurface = AtCorner(s, x) ? 1e-6 : 1e-10;
+		if (std::fabs(level - own) <= onSurface * std::max(std::fabs(own), 1.0))
+			return X;
+		const bool inside = level <= own;
+		const double reach = Distance(X, ps.p) + 1.01 * s.BoundingRadius();
+		if (inside || !s.IsConvex())
+		{
+			const Vec2 way = inside ? dir : -dir;
+			const double t = FirstSurfaceCrossing(s, ps, X, way, reach);
+			if (t >= 0.0)
+				return X + t * way;
+		}
+		else
+		{
+			const double beyond = Dot(ps.p - X, dir) + 1.01 * s.BoundingRadius();
+			const Vec2 start = X + std::max(beyond, 0.0) * dir;
+			const double t = FirstSurfaceCrossing(s, ps, start, -dir, 2.02 * s.BoundingRadius() + Distance(start, ps.p));
+			if (t >= 0.0)
+				return start - t * dir;
+		}
+		return RadialPoint(s, ps, X); // the line misses a far-away particle
+	};
+	c.pointA = extreme(a, pa, n);
+	c.pointB = extreme(b, pb, -n);
 
 	c.separation = Dot(c.pointB - c.pointA, n);
 	if (touching && c.separation > 0.0)
@@ -170,20 +228,20 @@ ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const 
 	if (!ab.Ok() || !ba.Ok())
 		return Failed(ab.Ok() ? ba : ab);
 	const bool touchAB = ab.level <= a.SurfaceLevel(), touchBA = ba.level <= b.SurfaceLevel();
-	ContactResult cab = ContactFromLevel(a, pa, b, pb, ab, touchAB);
-	ContactResult cba = FlipContact(ContactFromLevel(b, pb, a, pa, ba, touchBA));
+	ContactResult cab = ContactFromLevel(a, pa, b, pb, ab, touchAB, true);
+	ContactResult cba = FlipContact(ContactFromLevel(b, pb, a, pa, ba, touchBA, true));
 	const int iterations = ab.iterations + ba.iterations;
 	cab.iterations = cba.iterations = iterations;
 	if (touchAB != touchBA)
 		return touchAB ? cab : cba;
-	// The deeper (or nearer) of the two; exact ties by the midpoint of the points, which does
-	// not depend on the order of A and B.
+	// The deeper (or nearer) of the two. Ties (two equal circles, say) go to the answer that
+	// rescales the particle whose pose comes first in a fixed order, an order that does not
+	// depend on which of the two is called A.
 	const double tol = 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius());
 	if (cab.separation < cba.separation - tol) return cab;
 	if (cba.separation < cab.separation - tol) return cba;
-	const Vec2 mab = 0.5 * (cab.pointA + cab.pointB), mba = 0.5 * (cba.pointA + cba.pointB);
-	if (mab.x != mba.x) return mab.x < mba.x ? cab : cba;
-	return mab.y <= mba.y ? cab : cba;
+	auto key = [](const Pose& p) { return std::make_tuple(p.p.x, p.p.y, p.q.c, p.q.s); };
+	return key(pa) <= key(pb) ? cab : cba;
 }
 
 namespace

@@ -148,6 +148,13 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 
 LevelResult SolveCommonLevelGrid(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)
 {
+	if (!(Distance(pa.p, pb.p) > 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius())))
+	{
+		LevelResult r;
+		r.method = SolveMethod::grid;
+		r.failure = "coincident centres: no common-level point between them";
+		return r;
+	}
 	// g(C) = smallest level of A on B's level-C surface decreases with C, so h(C) = g(C) − C has
 	// one root, bracketed by 1 and g(1): if g(1) > 1 then h(1) > 0 ≥ h(g(1)), and vice versa.
 	// Levels are in units of each shape's own level (1 for the superellipse family).

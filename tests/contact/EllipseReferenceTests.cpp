@@ -1,0 +1,183 @@
+// Ellipse pairs against the Perram–Wertheim contact function computed in long double.
+//
+// Reference (ContactReference.h, PerramWertheim): with F_i(X) = (X − c_i)ᵀ M_i (X − c_i),
+// S(μ) = min_X (F_A + μF_B)/(1 + μ) has the closed-form minimiser X(μ) (a 2×2 linear solve) and
+// C = max_μ S(μ) is reached where F_A(X(μ)) = F_B(X(μ)), a monotone function of log μ that is
+// bisected to long-double resolution. Levels are evaluated through body coordinates, so the
+// reference is exact to ~1e-17 relative even for aspect 100 (checked against a second,
+// unrelated long-double reference in SolverAgreementTests).
+//
+// Cases: random ellipses with aspect ratios 1 to 100 and sizes 1e-3 to 1e3, placed so that the
+// reference common level hits chosen targets from deep overlap (0.01) through near-tangency
+// (1 ± 1e-6) to far apart (1e3). For ellipses the level sets are the particle scaled by √L about
+// its centre, so along a fixed direction C grows as the square of the centre distance and one
+// reference solve gives the distance for any target.
+//
+// Tolerances (the brief's 1e-10): each solver stops at rounding level in double. The common
+// level is stationary at the solution (a min–max value), so rounding of the point enters it only
+// at second order; what remains is the rounding of the level evaluations, amplified by the ratio
+// of the world coordinates (up to ~10 sizes from the origin) to the thinnest semi-axis (down to
+// 1/100 of the size): ~1e-16 · 1e3 = 1e-13 (measured: 5e-13 at worst). The point is not
+// stationary, and where the two surfaces are nearly parallel it is ill-conditioned along the
+// tangent; it is checked to 1e-10 of the rescaled pair's size, the normal to 1e-10 (measured:
+// below 1e-13).
+#include <doctest/doctest.h>
+
+#include <iomanip>
+
+#include "b2analytic/b2analytic.h"
+#include "TestSupport.h"
+#include "ContactChecks.h"
+#include "ContactReference.h"
+
+#include <vector>
+
+using namespace b2a;
+using namespace b2a::test;
+using ref::LD;
+using ref::V;
+
+namespace
+{
+struct EllipseCase
+{
+	double aA, bA, aB, bB;
+	Pose pa, pb;
+	LD target; // the level the placement aimed at (the actual reference is recomputed)
+};
+
+ref::Quad QuadA(const EllipseCase& c) { return ref::QuadOf(c.aA, c.bA, ref::Of(c.pa)); }
+ref::Quad QuadB(const EllipseCase& c) { return ref::QuadOf(c.aB, c.bB, ref::Of(c.pb)); }
+
+// Random ellipse pairs placed at chosen reference levels.
+std::vector<EllipseCase> Cases(std::uint64_t seed, int pairs, const std::vector<LD>& targets)
+{
+	Random rng(seed);
+	std::vector<EllipseCase> out;
+	for (int k = 0; k < pairs; ++k)
+	{
+		const double size = rng.LogUniform(1e-3, 1e3);
+		auto axes = [&](double& a, double& b) {
+			const double major = size * rng.LogUniform(0.5, 2.0), aspect = rng.LogUniform(1.0, 100.0);
+			a = major;
+			b = major / aspect;
+			if (rng.Uniform(0.0, 1.0) < 0.5) std::swap(a, b);
+		};
+		EllipseCase c{};
+		axes(c.aA, c.bA);
+		axes(c.aB, c.bB);
+		const Vec2 ca(rng.Uniform(-10.0, 10.0) * size, rng.Uniform(-10.0, 10.0) * size);
+		const double thA = rng.Angle(), thB = rng.Angle(), dir = rng.Angle();
+		const Vec2 u(std::cos(dir), std::sin(dir));
+		// Tangency distance along u from one reference solve at distance `size`.
+		c.pa = Pose(ca, thA);
+		c.pb = Pose(ca + size * u, thB);
+		const LD C0 = ref::PerramWertheim(QuadA(c), QuadB(c)).level;
+		const LD tangent = LD(size) / std::sqrt(C0);
+		for (LD t : targets)
+		{
+			EllipseCase e = c;
+			e.pb = Pose(ca + double(tangent * std::sqrt(t)) * u, thB);
+			e.target = t;
+			out.push_back(e);
+		}
+	}
+	return out;
+}
+
+const std::vector<LD> kTargets = {0.01L, 0.3L, 0.9L, 1.0L - 1e-6L, 1.0L + 1e-6L, 1.5L, 10.0L, 1e3L};
+
+double LevelErr(double got, LD want) { return double(std::fabs(LD(got) - want) / want); }
+} // namespace
+
+TEST_CASE("ellipses: every common-level solver matches the long-double Perram-Wertheim reference")
+{
+	const auto cases = Cases(7001, 14, kTargets);
+	for (const EllipseCase& c : cases)
+	{
+		const auto a = MakeEllipse(c.aA, c.bA), b = MakeEllipse(c.aB, c.bB);
+		const ref::PwResult want = ref::PerramWertheim(QuadA(c), QuadB(c));
+		// Length scale of the touching point: the rescaled particles' sizes.
+		const LD scale = std::sqrt(want.level) * (std::max(c.aA, c.bA) + std::max(c.aB, c.bB));
+		INFO("A=(" << c.aA << "," << c.bA << ") B=(" << c.aB << "," << c.bB << ") C_ref=" << double(want.level));
+		const std::pair<const char*, LevelResult> results[] = {
+			{"SolveCommonLevelNewton", SolveCommonLevelNewton(*a, c.pa, *b, c.pb)},
+			{"SolveCommonLevelMinMax", SolveCommonLevelMinMax(*a, c.pa, *b, c.pb)},
+			{"SolveCommonLevelGrid", SolveCommonLevelGrid(*a, c.pa, *b, c.pb)},
+			{"SolveCommonLevel", SolveCommonLevel(*a, c.pa, *b, c.pb)},
+		};
+		for (const auto& item : results)
+		{
+			const auto& name = item.first;
+			const auto& r = item.second;
+			INFO(std::string(name));
+			REQUIRE(r.Ok());
+			const double le = LevelErr(r.level, want.level);
+			const double pe = double(ref::Dist(r.point, want.point) / scale);
+			CHECK(le <= 1e-10);
+			CHECK(pe <= 1e-10);
+			CHECK(double(ref::Dist(r.normal, want.normal)) <= 1e-10);
+		}
+	}
+}
+
+TEST_CASE("ellipses: ComputeContact's points, normal and separation match the long-double line-ellipse intersections")
+{
+	// Reference: the PW point and normal, and the roots of F(X + s·n) = 1 on each ellipse (the
+	// side the line leaves or first enters, as ContactResult documents), or where the line misses
+	// a particle the documented radial point c + (X − c)/√F(X). Separation to 1e-9 of the size:
+	// it is a difference of two such points, each as exact as the common point (see above).
+	const auto cases = Cases(7002, 10, {0.05L, 0.5L, 0.99L, 1.01L, 2.0L, 5.0L});
+	int compared = 0, fallbacks = 0;
+	for (const EllipseCase& c : cases)
+	{
+		const auto a = MakeEllipse(c.aA, c.bA), b = MakeEllipse(c.aB, c.bB);
+		const ref::EllipseContactRef want = ref::EllipseContact(QuadA(c), QuadB(c));
+		++compared;
+		fallbacks += !want.lineHitsBoth;
+		const LD size = std::max(c.aA, c.bA) + std::max(c.aB, c.bB);
+		INFO("A=(" << c.aA << "," << c.bA << ") B=(" << c.aB << "," << c.bB << ") C_ref=" << double(want.level.level));
+		for (MethodChoice m : {MethodChoice::automatic, MethodChoice::newton})
+		{
+			const ContactResult r = ComputeContact(*a, c.pa, *b, c.pb, m);
+			REQUIRE(r.Ok());
+			const double e1 = double(ref::Dist(r.normal, want.level.normal));
+			const double e2 = double(ref::Dist(r.pointA, want.pointA) / size);
+			const double e3 = double(ref::Dist(r.pointB, want.pointB) / size);
+			const double e4 = double(std::fabs(LD(r.separation) - want.separation) / size);
+			CHECK(e1 <= 1e-9);
+			CHECK(e2 <= 1e-9);
+			CHECK(e3 <= 1e-9);
+			CHECK(e4 <= 1e-9);
+			CHECK(r.touching == (want.level.level <= 1.0L));
+			CHECK(r.touching == (want.separation <= 0.0L));
+		}
+	}
+	CHECK(compared == 60);
+	CHECK(fallbacks < compared / 2); // the fallback is the exception (far-apart, thin pairs)
+}
+
+TEST_CASE("ellipses: the one-sided scale (grid and Newton) matches the long-double Lagrange point")
+{
+	// Reference: the Lagrange point X(μ), μ > 0, on B's surface (EllipseScaleRef), exact for A's
+	// centre outside B. Same tolerances as the common level: the scale is a minimum (stationary).
+	const auto cases = Cases(7003, 10, {1.5L, 4.0L, 30.0L});
+	for (const EllipseCase& c : cases)
+	{
+		const auto a = MakeEllipse(c.aA, c.bA), b = MakeEllipse(c.aB, c.bB);
+		if (QuadB(c).F(ref::FromVec(c.pa.p)) <= 1.0L)
+			continue; // A's centre inside B
+		const ref::PwResult want = ref::EllipseScaleRef(QuadA(c), QuadB(c));
+		const LD scale = std::max(c.aB, c.bB) + std::sqrt(want.level) * std::max(c.aA, c.bA);
+		INFO("A=(" << c.aA << "," << c.bA << ") B=(" << c.aB << "," << c.bB << ") scale_ref=" << double(want.level));
+		for (MethodChoice m : {MethodChoice::automatic, MethodChoice::grid, MethodChoice::newton})
+		{
+			const LevelResult r = SolveScaleA(*a, c.pa, *b, c.pb, m);
+			INFO("method " << int(m) << ": " << std::string(r.failure) << " pa=(" << std::setprecision(17) << c.pa.p.x << "," << c.pa.p.y << "," << c.pa.q.Angle() << ") pb=(" << c.pb.p.x << "," << c.pb.p.y << "," << c.pb.q.Angle() << ")");
+			REQUIRE(r.Ok());
+			const double le = LevelErr(r.level, want.level), pe = double(ref::Dist(r.point, want.point) / scale);
+			CHECK(le <= 1e-10);
+			CHECK(pe <= 1e-9);
+		}
+	}
+}

@@ -1,0 +1,204 @@
+// Hearts (paper eq. 20, non-convex): the grid method against a brute-force minimum, contacts
+// against independent verdicts, and a symmetry identity.
+//
+// Reference: the smallest level of A over B's surface, brute force in long double: 200000
+// samples of B's surface (polar angle, radius from a long-double bisection of the heart's radial
+// equation; closed form for circles), then each of the 8 lowest local minima and the cusps
+// polished by golden-section search and a derivative-sign bisection (ContactReference.h). The
+// level found is a value at a real surface point, exact to ~1e-18; the sample spacing (~3e-5)
+// only decides which basins are polished.
+//
+// Tolerance 1e-9 relative (of max(|level|, α_A): the heart's level crosses 0 inside it): the
+// library refines its 256-sample minimum to rounding (a bracketed root of the derivative along
+// the surface). Where the minimum sits in the |x|^{2/3} valley along a heart's axis (common: the
+// tip or the notch side facing the other particle) a double-precision point, off by δ ~ 1e-16,
+// costs δ^{2/3} ~ 2e-11 in the level (measured up to 1.1e-10 relative); a refinement that
+// stopped early or a wrong basin is off by 1e-7 to 1e-1. The point is checked where the minimum is unique (the next
+// local minimum is at least 1e-6 higher), to 1e-7 of the size: near a minimum the level is
+// quadratic, so a point error δ costs only ~δ² in the level; the point is resolved to ~√eps.
+#include <doctest/doctest.h>
+
+#include "b2analytic/b2analytic.h"
+#include "TestSupport.h"
+#include "ContactChecks.h"
+#include "ContactReference.h"
+
+#include <map>
+#include <vector>
+
+using namespace b2a;
+using namespace b2a::test;
+using ref::LD;
+using ref::V;
+
+namespace
+{
+struct Posed
+{
+	ShapePtr shape;
+	ref::RefShape refShape;
+	Pose pose;
+};
+
+Posed Heart(double alpha, Vec2 p, double angle) { return {MakeHeart(alpha), ref::RefShape::Heart(alpha), Pose(p, angle)}; }
+Posed Circle(double r, Vec2 p) { return {MakeCircle(r), ref::RefShape::Circle(r), Pose(p, 0.2)}; }
+
+// Dense surface samples, computed once per distinct reference shape.
+const ref::Curve& DenseCurve(const ref::RefShape& s)
+{
+	static std::map<std::pair<int, long double>, ref::Curve> cache;
+	const auto key = std::make_pair(int(s.kind), s.kind == ref::RefShape::Kind::heart ? s.alpha : s.a);
+	auto it = cache.find(key);
+	if (it == cache.end())
+		it = cache.emplace(key, ref::SampleCurve(s, s.Own(), 200000)).first;
+	return it->second;
+}
+
+ref::SurfaceMinResult BruteForce(const Posed& a, const Posed& b)
+{
+	return ref::SurfaceMin(a.refShape, ref::Of(a.pose), b.refShape, ref::Of(b.pose), b.refShape.Own(), 0, 8,
+	                       &DenseCurve(b.refShape));
+}
+
+struct NamedPair
+{
+	const char* name;
+	Posed a, b;
+	bool severalMinima; // the configuration puts A in a cleft: several comparable local minima
+};
+
+std::vector<NamedPair> Pairs()
+{
+	return {
+		{"heart vs circle, apart", Heart(1.0, {0, 0}, 0.0), Circle(0.3, {2.0, 0.5}), false},
+		{"circle vs heart, apart", Circle(0.3, {2.0, 0.5}), Heart(1.0, {0, 0}, 0.0), false},
+		{"heart vs circle, overlapping", Heart(1.0, {0, 0}, 0.0), Circle(0.4, {0.9, 0.4}), false},
+		{"circle vs heart, overlapping", Circle(0.4, {0.9, 0.4}), Heart(1.0, {0, 0}, 0.0), false},
+		// A small circle in the notch: its level over the heart's surface has a minimum on each
+		// inner slope of the cleft, nearly equal (the circle sits 0.005 off the axis).
+		{"circle in the notch vs heart", Circle(0.12, {0.005, 1.12}), Heart(1.0, {0, 0}, 0.0), true},
+		{"heart vs circle in the notch", Heart(1.0, {0, 0}, 0.0), Circle(0.12, {0.005, 1.12}), false},
+		// A small heart in the notch of a big one, slightly off the axis and turned.
+		{"small heart in the notch vs big heart", Heart(0.05, {0.003, 1.2}, 0.02), Heart(1.0, {0, 0}, 0.0), true},
+		{"big heart vs small heart in the notch", Heart(1.0, {0, 0}, 0.0), Heart(0.05, {0.003, 1.2}, 0.02), false},
+		{"rotated hearts, apart", Heart(2.0, {0.5, -0.3}, 2.0), Heart(0.7, {3.4, 1.9}, -0.6), false},
+		{"rotated hearts, overlapping", Heart(0.7, {2.2, 1.1}, -0.6), Heart(2.0, {0.5, -0.3}, 2.0), false},
+		{"rotated heart vs circle, near", Heart(1.5, {-0.4, 0.2}, 0.8), Circle(0.25, {-1.9, 1.3}), false},
+	};
+}
+
+double LevelTol(const Posed& a, LD want) { return 1e-9 * double(std::max(std::fabs(want), LD(a.shape->SurfaceLevel()))); }
+} // namespace
+
+TEST_CASE("hearts: SolveGridScale (and SolveScaleA) match a 200000-sample brute-force minimum with polishing")
+{
+	int several = 0;
+	for (const NamedPair& p : Pairs())
+	{
+		INFO(std::string(p.name));
+		const ref::SurfaceMinResult want = BruteForce(p.a, p.b);
+		if (p.severalMinima)
+		{
+			// The configuration does what it is meant to: a second local minimum close to the first.
+			CHECK(want.secondValue - want.value <= 0.25L * std::fabs(want.value) + 0.05L * p.a.refShape.Own());
+			++several;
+		}
+		for (const LevelResult& r : {SolveGridScale(*p.a.shape, p.a.pose, *p.b.shape, p.b.pose),
+		                             SolveScaleA(*p.a.shape, p.a.pose, *p.b.shape, p.b.pose)})
+		{
+			REQUIRE(r.Ok());
+			CHECK(r.method == SolveMethod::grid);
+			CHECK(std::fabs(LD(r.level) - want.value) <= LevelTol(p.a, want.value));
+			// The point lies on B's surface and A's level there is the reported level. (2e-10: on a
+			// heart's axis its level is not Lipschitz, a rounding δ of x moves it by δ^{2/3} ~ 4e-11.)
+			CHECK(std::fabs(RelativeLevel(*p.b.shape, p.b.pose, r.point) - 1.0) <= 2e-10);
+			CHECK(std::fabs(p.a.shape->Level(ToBody(p.a.pose, r.point)) - r.level) <= 2e-10 * std::max(1.0, std::fabs(r.level)));
+			if (want.secondValue - want.value > 1e-6L * std::max(std::fabs(want.value), 1.0L))
+				CHECK(double(ref::Dist(r.point, want.point)) <= 1e-7 * p.b.shape->BoundingRadius());
+		}
+		// Newton refuses a heart, with a reason.
+		const LevelResult newton = SolveScaleA(*p.a.shape, p.a.pose, *p.b.shape, p.b.pose, MethodChoice::newton);
+		CHECK_FALSE(newton.Ok());
+		CHECK(std::string(newton.failure).size() > 0);
+	}
+	CHECK(several == 2);
+}
+
+TEST_CASE("hearts: with several local minima in the cleft, the grid refines the global one, not the nearest sample's")
+{
+	// Move a small circle across the notch: the two slope minima trade places as it crosses the
+	// axis, and near the axis they differ by less than the 256-sample grid resolves. The refined
+	// global minimum must match the brute force on both sides and at the crossing.
+	for (double x : {-0.04, -0.01, -0.002, 0.0, 0.003, 0.012, 0.05})
+	{
+		const Posed c = Circle(0.1, {x, 1.1}), h = Heart(1.0, {0, 0}, 0.0);
+		INFO("circle at x=" << x);
+		const ref::SurfaceMinResult want = BruteForce(c, h);
+		const LevelResult r = SolveGridScale(*c.shape, c.pose, *h.shape, h.pose);
+		REQUIRE(r.Ok());
+		CHECK(std::fabs(LD(r.level) - want.value) <= LevelTol(c, want.value));
+		// The point is on the slope of the same side as the circle's offset (x = 0: either).
+		if (x != 0.0)
+			CHECK((r.point.x > 0.0) == (x > 0.0));
+	}
+}
+
+TEST_CASE("hearts: ComputeContact's verdict matches the brute-force minima both ways, and the points lie on the surfaces")
+{
+	// Two particles overlap exactly when A's rescaling onto B's surface is at or below A's own
+	// level, or the other way round (one inside the other shows up in the second test).
+	for (const NamedPair& p : Pairs())
+	{
+		INFO(std::string(p.name));
+		const ref::SurfaceMinResult ab = BruteForce(p.a, p.b), ba = BruteForce(p.b, p.a);
+		const bool want = ab.value <= p.a.refShape.Own() || ba.value <= p.b.refShape.Own();
+		// Keep clear of tangency so that the verdict is determined (all cases are).
+		CHECK(std::fabs(ab.value / p.a.refShape.Own() - 1.0L) > 1e-6L);
+		const ContactResult r = ComputeContact(*p.a.shape, p.a.pose, *p.b.shape, p.b.pose);
+		REQUIRE(r.Ok());
+		CHECK(AllFinite(r));
+		CHECK(r.method == SolveMethod::grid);
+		CHECK(r.touching == want);
+		CHECK(r.touching == (r.separation <= 0.0));
+		// Contact symmetry (exact for the grid path).
+		const ContactResult s = ComputeContact(*p.b.shape, p.b.pose, *p.a.shape, p.a.pose);
+		REQUIRE(s.Ok());
+		CHECK(s.touching == r.touching);
+		CHECK(s.separation == r.separation);
+		CHECK(s.normal.x == -r.normal.x);
+		CHECK(s.normal.y == -r.normal.y);
+		CHECK(MaxDiff(s.pointA, r.pointB) == 0.0);
+		CHECK(MaxDiff(s.pointB, r.pointA) == 0.0);
+	}
+}
+
+TEST_CASE("hearts: a heart's tip pointing at a circle gives the axis as the normal, for every orientation")
+{
+	// Mirror symmetry: a heart is symmetric about its body y axis; a circle centred on that axis
+	// below the tip makes the whole configuration symmetric, and the tip (0, −√α) is the nearest
+	// point of the heart. So the contact normal must be the axis direction R(θ)(0, −1), pointA the
+	// tip, pointB the circle's nearest point, and the separation the gap along the axis:
+	//   circle centre at body (0, −1.5), r = 0.3: separation 0.2 (apart);
+	//   circle centre at body (0, −1.2), r = 0.3: separation −0.1 (overlapping).
+	// The heart's level function has a kink along its axis (|x|^{2/3}); the contact must not
+	// depend on which side of the axis rounding puts the point.
+	const auto heart = MakeHeart(1.0);
+	const auto circle = MakeCircle(0.3);
+	for (double theta : {0.0, 0.7, -2.1, 3.0})
+		for (const auto& item : {std::pair<double, double>{1.5, 0.2}, {1.2, -0.1}})
+		{
+			const auto& depth = item.first;
+			const auto& gap = item.second;
+			const Pose ph(Vec2(0.4, -0.7), theta);
+			const Pose pc(ToWorld(ph, Vec2(0.0, -depth)), 0.0);
+			const Vec2 axis = Rotate(ph.q, Vec2(0.0, -1.0));
+			INFO("theta=" << theta << " depth=" << depth);
+			const ContactResult r = ComputeContact(*heart, ph, *circle, pc);
+			REQUIRE(r.Ok());
+			CHECK(r.touching == (gap <= 0.0));
+			CHECK(MaxDiff(r.normal, axis) <= 1e-6);
+			CHECK(std::fabs(r.separation - gap) <= 1e-6);
+			CHECK(MaxDiff(r.pointA, ToWorld(ph, Vec2(0.0, -1.0))) <= 1e-6);
+			CHECK(MaxDiff(r.pointB, pc.p - 0.3 * axis) <= 1e-6);
+		}
+}
