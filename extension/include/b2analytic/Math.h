@@ -60,6 +60,16 @@ inline Vec2 Normalize(Vec2 a)
 	return a / len;
 }
 
+/// Distance from the point p to the segment [a, b].
+inline double DistanceToSegment(Vec2 p, Vec2 a, Vec2 b)
+{
+	const Vec2 ab = b - a;
+	const double len2 = LengthSquared(ab);
+	double t = len2 > 0.0 ? Dot(p - a, ab) / len2 : 0.0;
+	t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+	return Distance(p, a + t * ab);
+}
+
 /// A symmetric 2x2 matrix, used for Hessians.
 struct Sym22
 {

@@ -166,12 +166,8 @@ LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& 
                                    const SolverOptions& options, const WarmStart* warm)
 {
 	LevelResult result;
-	result.method = SolveMethod::newton;
-	if (!a.IsSmoothConvex() || !b.IsSmoothConvex())
-	{
-		result.failure = "Newton needs smooth, strictly convex shapes (superellipse exponents >= 2)";
+	if (!NewtonApplies(a, b, result))
 		return result;
-	}
 	const PairFrame f(a, pa, b, pb);
 	Vec2 xi;
 	double mu = 1.0;

@@ -7,6 +7,16 @@
 namespace b2a
 {
 
+/// True when both shapes suit Newton (smooth, strictly convex); else fills `failure` with why.
+inline bool NewtonApplies(const Shape& a, const Shape& b, LevelResult& failure)
+{
+	failure.method = SolveMethod::newton;
+	if (a.IsSmoothConvex() && b.IsSmoothConvex())
+		return true;
+	failure.failure = "Newton needs smooth, strictly convex shapes (superellipse exponents >= 2)";
+	return false;
+}
+
 /// Newton–Raphson on the common level from (ξ, m = log μ) in a PairFrame; `level` is λA there.
 LevelResult RunNewton(const PairFrame& frame, Vec2 xi, double m, const SolverOptions& options);
 

@@ -1,6 +1,7 @@
 // b2analytic: Newton's method for the one-sided scale (A rescaled onto B's surface).
 #include "b2analytic/CommonLevel.h"
 
+#include "contact/NewtonCore.h"
 #include "contact/PairFrame.h"
 
 #include <Eigen/Dense>
@@ -119,12 +120,8 @@ LevelResult RunScaleNewton(const PairFrame& f, Vec2 xi, double trust, const Solv
 LevelResult SolveScaleANewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)
 {
 	LevelResult result;
-	result.method = SolveMethod::newton;
-	if (!a.IsSmoothConvex() || !b.IsSmoothConvex())
-	{
-		result.failure = "Newton needs smooth, strictly convex shapes (superellipse exponents >= 2)";
+	if (!NewtonApplies(a, b, result))
 		return result;
-	}
 	const PairFrame f(a, pa, b, pb);
 	// λA on B's surface has a minimum and a maximum (more when A's centre is inside B) and Newton
 	// finds whichever critical point is near. Start near the lowest local minima of A's level over

@@ -13,15 +13,6 @@ namespace b2a
 
 namespace
 {
-double SegmentDistance(Vec2 p, Vec2 a, Vec2 b)
-{
-	const Vec2 ab = b - a;
-	const double len2 = LengthSquared(ab);
-	double t = len2 > 0.0 ? Dot(p - a, ab) / len2 : 0.0;
-	t = std::min(1.0, std::max(0.0, t));
-	return Distance(p, a + t * ab);
-}
-
 // Distance between two closed polylines (segments do not cross: that case returns 0).
 double PolylineDistance(const std::vector<Vec2>& p, const std::vector<Vec2>& q)
 {
@@ -38,8 +29,8 @@ double PolylineDistance(const std::vector<Vec2>& p, const std::vector<Vec2>& q)
 			const double d3 = Cross(b1 - b0, a0 - b0), d4 = Cross(b1 - b0, a1 - b0);
 			if (((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)))
 				return 0.0;
-			best = std::min({best, SegmentDistance(a0, b0, b1), SegmentDistance(a1, b0, b1), SegmentDistance(b0, a0, a1),
-			                 SegmentDistance(b1, a0, a1)});
+			best = std::min({best, DistanceToSegment(a0, b0, b1), DistanceToSegment(a1, b0, b1), DistanceToSegment(b0, a0, a1),
+			                 DistanceToSegment(b1, a0, a1)});
 		}
 	}
 	return best;

@@ -151,15 +151,6 @@ double WrapAngle(double t)
 	return t;
 }
 
-// Distance from p to the segment [a, b].
-double SegmentDistance(Vec2 p, Vec2 a, Vec2 b)
-{
-	const Vec2 ab = b - a;
-	const double len2 = LengthSquared(ab);
-	double t = len2 > 0.0 ? Dot(p - a, ab) / len2 : 0.0;
-	t = std::min(1.0, std::max(0.0, t));
-	return Distance(p, a + t * ab);
-}
 } // namespace
 
 std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
@@ -292,7 +283,7 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 		for (int q = 1; q < 4; ++q)
 		{
 			const Vec2 mid = SurfacePoint(t0 + (t1 - t0) * q / 4.0, L);
-			out->maxDeviation = std::max(out->maxDeviation, SegmentDistance(mid, out->point[k], out->point[j]));
+			out->maxDeviation = std::max(out->maxDeviation, DistanceToSegment(mid, out->point[k], out->point[j]));
 		}
 	}
 	m_samples.emplace_back(count, out);
