@@ -1,6 +1,8 @@
 // b2analytic demos: shared command line, files and progress.
 #include "DemoCommon.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -9,9 +11,10 @@
 namespace b2a::demo
 {
 
-DemoOptions ParseDemoOptions(int argc, char** argv, const char* name, const char* help)
+DemoOptions ParseDemoOptions(int argc, char** argv, const char* name, const char* help, const std::vector<std::string>& extra)
 {
 	DemoOptions o;
+	o.name = name;
 	o.out = std::string("out/") + name;
 	for (int i = 1; i < argc; ++i)
 	{
@@ -51,6 +54,8 @@ DemoOptions ParseDemoOptions(int argc, char** argv, const char* name, const char
 		}
 		else if (arg == "--quick")
 			o.quick = true;
+		else if (std::find(extra.begin(), extra.end(), arg) != extra.end())
+			o.extra[arg] = value("a value");
 		else
 		{
 			std::fprintf(stderr, "%s: unknown argument '%s' (see --help)\n", name, arg.c_str());
@@ -65,6 +70,48 @@ DemoOptions ParseDemoOptions(int argc, char** argv, const char* name, const char
 		std::exit(1);
 	}
 	return o;
+}
+
+namespace
+{
+[[noreturn]] void BadValue(const DemoOptions& o, const std::string& option, const std::string& value, double lo, double hi)
+{
+	std::fprintf(stderr, "%s: option '%s' needs a number from %g to %g, got '%s'\n", o.name.c_str(), option.c_str(), lo, hi,
+	             value.c_str());
+	std::exit(2);
+}
+
+double ParseNumber(const DemoOptions& o, const std::string& option, const std::string& text, double lo, double hi)
+{
+	char* end = nullptr;
+	const double v = std::strtod(text.c_str(), &end);
+	if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
+		BadValue(o, option, text, lo, hi);
+	return v;
+}
+} // namespace
+
+double DemoOptions::Number(const std::string& option, double fallback, double lo, double hi) const
+{
+	const auto it = extra.find(option);
+	return it == extra.end() ? fallback : ParseNumber(*this, option, it->second, lo, hi);
+}
+
+std::vector<double> DemoOptions::Numbers(const std::string& option, const std::vector<double>& fallback, double lo, double hi) const
+{
+	const auto it = extra.find(option);
+	if (it == extra.end())
+		return fallback;
+	std::vector<double> out;
+	size_t start = 0;
+	const std::string& text = it->second;
+	while (start <= text.size())
+	{
+		const size_t comma = std::min(text.find(',', start), text.size());
+		out.push_back(ParseNumber(*this, option, text.substr(start, comma - start), lo, hi));
+		start = comma + 1;
+	}
+	return out;
 }
 
 void WriteText(const std::string& path, const std::string& text)

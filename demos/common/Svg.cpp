@@ -12,7 +12,7 @@ namespace
 std::string Num(double v)
 {
 	char b[32];
-	std::snprintf(b, sizeof(b), "%.2f", v);
+	std::snprintf(b, sizeof(b), "%.1f", v); // a tenth of a pixel
 	return b;
 }
 } // namespace

@@ -1,0 +1,230 @@
+// b2analytic demos: the granular scene shared by the packing and hopper demos.
+#include "GranularScene.h"
+
+#include "Svg.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace b2a::demo
+{
+
+// Sums the vertical normal impulses on the floor and gate fixtures.
+struct GranularScene::FloorMeter : b2ContactListener
+{
+	std::vector<const b2Fixture*> floor;
+	double impulse = 0.0;
+	void PostSolve(b2Contact* contact, const b2ContactImpulse* impulses) override
+	{
+		const b2Fixture* a = contact->GetFixtureA();
+		const b2Fixture* b = contact->GetFixtureB();
+		if (std::find(floor.begin(), floor.end(), a) == floor.end() && std::find(floor.begin(), floor.end(), b) == floor.end())
+			return;
+		b2WorldManifold wm;
+		contact->GetWorldManifold(&wm);
+		for (int32 i = 0; i < impulses->count; ++i)
+			impulse += impulses->normalImpulses[i] * std::fabs(wm.normal.y);
+	}
+};
+
+GranularScene::GranularScene(const GranularConfig& c) : m_config(c)
+{
+	m_world = std::make_unique<b2World>(b2Vec2(0.0f, float(-c.gravity)));
+	m_world->SetAllowSleeping(false);
+	m_meter = std::make_unique<FloorMeter>();
+	m_world->SetContactListener(m_meter.get());
+
+	// Container: static edges. Box2D mixes restitution thresholds by their minimum, so the
+	// walls get the raised millimetre threshold as well.
+	b2BodyDef bd;
+	m_container = m_world->CreateBody(&bd);
+	b2EdgeShape edge;
+	b2FixtureDef fd;
+	fd.shape = &edge;
+	fd.friction = float(c.friction);
+	fd.restitutionThreshold = 1000.0f; // mm/s
+	const float w = float(0.5 * c.boxWidth), h = float(c.boxHeight), o = float(0.5 * c.outletWidth);
+	fd.friction = float(c.wallFriction);
+	edge.SetTwoSided(b2Vec2(-w, 0.0f), b2Vec2(-w, h));
+	m_container->CreateFixture(&fd);
+	edge.SetTwoSided(b2Vec2(w, 0.0f), b2Vec2(w, h));
+	m_container->CreateFixture(&fd);
+	fd.friction = float(c.friction);
+	if (o > 0.0f)
+	{
+		edge.SetTwoSided(b2Vec2(-w, 0.0f), b2Vec2(-o, 0.0f));
+		m_meter->floor.push_back(m_container->CreateFixture(&fd));
+		edge.SetTwoSided(b2Vec2(o, 0.0f), b2Vec2(w, 0.0f));
+		m_meter->floor.push_back(m_container->CreateFixture(&fd));
+		edge.SetTwoSided(b2Vec2(-o, 0.0f), b2Vec2(o, 0.0f));
+		m_gate = m_container->CreateFixture(&fd);
+		m_meter->floor.push_back(m_gate);
+	}
+	else
+	{
+		edge.SetTwoSided(b2Vec2(-w, 0.0f), b2Vec2(w, 0.0f)); // no outlet: one closed floor
+		m_meter->floor.push_back(m_container->CreateFixture(&fd));
+	}
+
+	// Particles: superellipses of random size (±spread) and orientation on a jittered lattice.
+	std::mt19937_64 rng(c.seed);
+	std::uniform_real_distribution<double> U(0.0, 1.0);
+	const double a0 = 0.5 * c.width, cell = 1.15 * c.width;
+	const int perRow = std::max(1, int((c.boxWidth - c.width) / cell));
+	for (int i = 0; i < c.particles; ++i)
+	{
+		const double s = 1.0 + c.sizeSpread * (2.0 * U(rng) - 1.0);
+		const double a = a0 * s, b = a / c.aspect;
+		ShapePtr shape = c.exponent == 2.0 ? ShapePtr(MakeEllipse(a, b)) : ShapePtr(MakeSuperellipse(a, b, c.exponent, c.exponent));
+		const int row = i / perRow, col = i % perRow;
+		const double x = -0.5 * (perRow - 1) * cell + col * cell + 0.1 * c.width * (U(rng) - 0.5);
+		const double y = c.width + row * cell + 0.1 * c.width * U(rng);
+		b2BodyDef pd;
+		pd.type = b2_dynamicBody;
+		pd.position.Set(float(x), float(y));
+		pd.angle = float(2.0 * kPi * U(rng));
+		b2Body* body = m_world->CreateBody(&pd);
+		b2FixtureDef pf;
+		pf.density = float(c.density);
+		pf.friction = float(c.friction);
+		pf.restitution = float(c.restitution);
+		pf.restitutionThreshold = 1000.0f;
+		AnalyticFixtureDef af;
+		af.shape = shape;
+		CreateAnalyticFixture(body, pf, af);
+		m_particles.push_back(body);
+	}
+}
+
+GranularScene::~GranularScene() = default;
+
+void GranularScene::Step()
+{
+	m_world->Step(float(m_config.dt), m_config.velocityIterations, m_config.positionIterations);
+	m_time += m_config.dt;
+	++m_meterSteps;
+	// Particles that fell well below the outlet have left: count and remove them.
+	const double below = -2.0 * m_config.width;
+	for (size_t i = 0; i < m_particles.size();)
+	{
+		if (m_particles[i]->GetPosition().y < below)
+		{
+			m_world->DestroyBody(m_particles[i]);
+			m_particles[i] = m_particles.back();
+			m_particles.pop_back();
+			++m_discharged;
+		}
+		else
+			++i;
+	}
+}
+
+Energies GranularScene::ComputeEnergies() const
+{
+	Energies e;
+	for (const b2Body* b : m_particles)
+	{
+		const b2Vec2 v = b->GetLinearVelocity();
+		const double w = b->GetAngularVelocity();
+		const double Ic = b->GetInertia() - b->GetMass() * b2Dot(b->GetLocalCenter(), b->GetLocalCenter());
+		e.translational += 0.5 * b->GetMass() * b2Dot(v, v);
+		e.rotational += 0.5 * Ic * w * w;
+		e.potential += b->GetMass() * m_config.gravity * b->GetWorldCenter().y;
+	}
+	return e;
+}
+
+double GranularScene::TakeBottomForce()
+{
+	const double force = m_meterSteps > 0 ? m_meter->impulse / (m_meterSteps * m_config.dt) : 0.0;
+	m_meter->impulse = 0.0;
+	m_meterSteps = 0;
+	return force;
+}
+
+double GranularScene::Weight() const
+{
+	double w = 0.0;
+	for (const b2Body* b : m_particles)
+		w += b->GetMass() * m_config.gravity;
+	return w;
+}
+
+void GranularScene::OpenOutlet()
+{
+	if (!m_gate)
+		return;
+	m_meter->floor.erase(std::find(m_meter->floor.begin(), m_meter->floor.end(), m_gate));
+	m_container->DestroyFixture(m_gate);
+	m_gate = nullptr;
+}
+
+double GranularScene::PileHeight() const
+{
+	double h = 0.0;
+	for (const b2Body* b : m_particles)
+		h = std::max(h, double(b->GetPosition().y));
+	return h;
+}
+
+double GranularScene::PackingFraction() const
+{
+	const double cut = 0.8 * PileHeight();
+	if (!(cut > 0.0))
+		return 0.0;
+	double area = 0.0;
+	for (const b2Body* b : m_particles)
+		if (b->GetPosition().y < cut && b->GetPosition().y > 0.0)
+			area += GetAnalyticShape(b->GetFixtureList())->Mass().area;
+	return area / (m_config.boxWidth * cut);
+}
+
+double GranularScene::KineticEnergyNearOutlet(double radius) const
+{
+	double e = 0.0;
+	for (const b2Body* b : m_particles)
+		if (b2Distance(b->GetPosition(), b2Vec2(0.0f, 0.0f)) < radius)
+			e += 0.5 * b->GetMass() * b2Dot(b->GetLinearVelocity(), b->GetLinearVelocity());
+	return e;
+}
+
+int GranularScene::ParticlesOverOutlet(double height) const
+{
+	int n = 0;
+	for (const b2Body* b : m_particles)
+		if (std::fabs(b->GetPosition().x) < 0.5 * m_config.outletWidth && b->GetPosition().y > 0.0 && b->GetPosition().y < height)
+			++n;
+	return n;
+}
+
+void GranularScene::WriteSnapshot(const std::string& path, const std::string& title) const
+{
+	const double w = 0.5 * m_config.boxWidth;
+	const double top = std::max(PileHeight() + 2.0 * m_config.width, 0.3 * m_config.boxWidth);
+	const double bottom = -3.0 * m_config.width;
+	SvgCanvas svg(Vec2(-w - 2.0, bottom), Vec2(w + 2.0, top + 0.15 * (top - bottom)), 720.0);
+	const Style wall{"none", "#333333", 3.0, "", 1.0};
+	const double o = 0.5 * m_config.outletWidth;
+	svg.Polyline({Vec2(-w, top), Vec2(-w, 0.0), Vec2(-o, 0.0)}, wall);
+	svg.Polyline({Vec2(o, 0.0), Vec2(w, 0.0), Vec2(w, top)}, wall);
+	if (m_gate)
+		svg.Polyline({Vec2(-o, 0.0), Vec2(o, 0.0)}, {"none", "#999999", 2.0, "4,3", 1.0});
+	for (const b2Body* b : m_particles)
+	{
+		const b2Fixture* f = b->GetFixtureList();
+		// Colour by speed: resting particles blue, moving ones orange.
+		const double speed = b->GetLinearVelocity().Length();
+		const bool moving = speed > 5.0; // mm/s
+		svg.Polygon(Outline(*GetAnalyticShape(f), GetAnalyticPose(f), 0.0 / 0.0, 20),
+		            {moving ? "#f28e2b" : "#4e79a7", "#1f1f1f", 0.4, "", 0.85});
+	}
+	svg.Label(10, 20, title, 15);
+	char line[160];
+	std::snprintf(line, sizeof(line), "t = %.3f s, %d particles in the container, %d discharged", m_time, Remaining(), m_discharged);
+	svg.Label(10, 38, line, 12);
+	WriteText(path, svg.Finish());
+}
+
+} // namespace b2a::demo

@@ -1,0 +1,117 @@
+// b2analytic tests: every demo runs in its quick mode and its summary makes physical sense.
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <sys/wait.h>
+
+using nlohmann::json;
+
+namespace
+{
+// Run a demo with --quick into a fresh folder; returns its summary.json.
+json RunDemo(const std::string& exe, const std::string& name, const std::string& args = "")
+{
+	const std::string out = "demo_out/" + name;
+	std::filesystem::remove_all(out);
+	const std::string cmd = "\"" + exe + "\" --quick --out " + out + " " + args + " > " + out + ".stdout 2> " + out + ".stderr";
+	std::filesystem::create_directories("demo_out");
+	const int status = std::system(cmd.c_str());
+	INFO("command: " << cmd);
+	REQUIRE(status == 0);
+	std::ifstream f(out + "/summary.json");
+	REQUIRE(f.good());
+	return json::parse(f);
+}
+
+bool Exists(const std::string& path)
+{
+	return std::filesystem::exists(path) && std::filesystem::file_size(path) > 100;
+}
+} // namespace
+
+TEST_CASE("b2a_demo_contacts: every case solved; the 1000:1 ellipses below the paper's grid value")
+{
+	const json s = RunDemo(B2A_DEMO_CONTACTS, "contacts");
+	CHECK(s["failures"] == 0);
+	bool found = false;
+	for (const json& c : s["cases"])
+	{
+		CHECK(c["status"] != "failed");
+		CHECK(Exists("demo_out/contacts/" + c["name"].get<std::string>() + ".svg"));
+		if (c["name"] == "ellipse_1000_grid")
+		{
+			found = true;
+			// Exact minimum (independently verified in the contact tests) and below the paper's
+			// grid sample value, which is an upper bound.
+			CHECK(c["level"].get<double>() == doctest::Approx(13.5918086967662).epsilon(1e-10));
+			CHECK(c["level"].get<double>() < c["paper_level"].get<double>());
+		}
+	}
+	CHECK(found);
+}
+
+TEST_CASE("b2a_demo_packing: the quick packing reaches mechanical equilibrium")
+{
+	const json s = RunDemo(B2A_DEMO_PACKING, "packing");
+	const double weight = s["weight"], force = s["bottom_force"];
+	CHECK(std::fabs(force - weight) < 0.01 * weight); // the floor carries the weight
+	CHECK(s["kinetic_energy"].get<double>() < 1e-6 * s["energy_released"].get<double>());
+	CHECK(s["packing_fraction"].get<double>() > 0.5);
+	CHECK(s["packing_fraction"].get<double>() < 0.95);
+	for (const char* f : {"energies.csv", "energies.svg", "initial.svg", "final.svg"})
+		CHECK(Exists(std::string("demo_out/packing/") + f));
+}
+
+TEST_CASE("b2a_demo_hopper: the quick discharge counts every particle and the packing carried its weight")
+{
+	const json s = RunDemo(B2A_DEMO_HOPPER, "hopper");
+	CHECK(s["outlet_width"].get<double>() == doctest::Approx(24.0));
+	CHECK(s["outlet_width_particle_widths"].get<double>() == doctest::Approx(12.0));
+	const int discharged = s["discharged"], remaining = s["remaining"], particles = s["particles"];
+	CHECK(discharged > 0);
+	CHECK(discharged + remaining == particles); // none lost, none made up
+	const double weight = s["packing"]["weight"], force = s["packing"]["bottom_force"];
+	CHECK(std::fabs(force - weight) < 0.01 * weight);
+	CHECK(s["arched"].is_boolean());
+	CHECK((s["flow_stopped_at"].is_null() || s["flow_stopped_at"].get<double>() >= 0.0));
+	if (s["arched"].get<bool>())
+		CHECK(s["over_outlet"].get<int>() > 0);
+	for (const char* f : {"discharge.csv", "discharge.svg", "snapshot_0.000.svg", "snapshot_final.svg"})
+		CHECK(Exists(std::string("demo_out/hopper/") + f));
+}
+
+TEST_CASE("b2a_demo_collision: fixed stepping finds the first contact within one step after the exact time")
+{
+	const json s = RunDemo(B2A_DEMO_COLLISION, "collision");
+	for (const json& c : s["cases"])
+	{
+		CAPTURE(c["name"].get<std::string>());
+		REQUIRE(c["hit"] == true);
+		const double exact = c["time"];
+		CHECK(std::fabs(c["separation_at_time"].get<double>()) < 1e-9); // the solver's own contact: touching
+		for (const json& r : c["fixed_stepping"])
+		{
+			// Stepping samples times k·dt: the first touching sample is the first at or after the
+			// exact time, so it is late by less than one step (or exact).
+			const double dt = r["dt"], t = r["first_touching_step_time"];
+			CHECK(t >= exact - 1e-12);
+			CHECK(t - exact < dt);
+		}
+		CHECK(Exists("demo_out/collision/" + c["name"].get<std::string>() + ".svg"));
+	}
+}
+
+TEST_CASE("demos reject bad options with a message and exit status 2")
+{
+	const std::string exe = B2A_DEMO_HOPPER;
+	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --particles many > /dev/null 2>&1").c_str())) == 2);
+	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --bogus > /dev/null 2>&1").c_str())) == 2);
+	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --outlet-widths 40 > /dev/null 2>&1").c_str())) == 2);
+	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --help > /dev/null 2>&1").c_str())) == 0);
+}
