@@ -163,14 +163,7 @@ int main(int argc, char** argv)
 	                   "particles discharged"));
 
 	const double runSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-	Json summary;
-	summary["demo"] = "b2a_demo_hopper";
-	summary["quick"] = opt.quick;
-	summary["seed"] = opt.seed;
-	summary["particles"] = config.particles;
-	summary["particle"] = {{"shape", "superellipse"}, {"exponent", config.exponent}, {"mean_width_mm", config.width},
-	                       {"aspect", config.aspect}, {"size_spread", config.sizeSpread}};
-	summary["box_width_mm"] = config.boxWidth;
+	Json summary = scene.SummaryHead("b2a_demo_hopper", opt);
 	summary["outlet_width"] = config.outletWidth;
 	summary["outlet_width_particle_widths"] = outletWidths;
 	summary["packed_at_s"] = packedAt;

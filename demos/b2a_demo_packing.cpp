@@ -99,14 +99,7 @@ int main(int argc, char** argv)
 
 	const double weight = scene.Weight();
 	const double kinetic = end.translational + end.rotational;
-	Json summary;
-	summary["demo"] = "b2a_demo_packing";
-	summary["quick"] = opt.quick;
-	summary["seed"] = opt.seed;
-	summary["particles"] = config.particles;
-	summary["particle"] = {{"shape", "superellipse"}, {"exponent", config.exponent}, {"mean_width_mm", config.width},
-	                       {"aspect", config.aspect}, {"size_spread", config.sizeSpread}};
-	summary["box_width_mm"] = config.boxWidth;
+	Json summary = scene.SummaryHead("b2a_demo_packing", opt);
 	summary["settled_at_s"] = scene.Time();
 	summary["kinetic_energy"] = kinetic;
 	summary["translational_energy"] = end.translational;

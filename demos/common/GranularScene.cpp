@@ -100,6 +100,21 @@ GranularScene::GranularScene(const GranularConfig& c) : m_config(c)
 
 GranularScene::~GranularScene() = default;
 
+Json GranularScene::SummaryHead(const std::string& demo, const DemoOptions& options) const
+{
+	const GranularConfig& c = m_config;
+	Json j;
+	j["demo"] = demo;
+	j["quick"] = options.quick;
+	j["seed"] = options.seed;
+	j["particles"] = c.particles;
+	j["particle"] = {{"shape", c.exponent == 2.0 ? "ellipse" : "superellipse"}, {"exponent", c.exponent}, {"mean_width_mm", c.width},
+	                 {"aspect", c.aspect}, {"size_spread", c.sizeSpread}};
+	j["box_width_mm"] = c.boxWidth;
+	j["time_step_s"] = c.dt;
+	return j;
+}
+
 void GranularScene::Step()
 {
 	m_world->Step(float(m_config.dt), m_config.velocityIterations, m_config.positionIterations);

@@ -87,6 +87,8 @@ public:
 	void WriteSnapshot(const std::string& path, const std::string& title) const;
 	/// The configuration.
 	const GranularConfig& Config() const { return m_config; }
+	/// The start of a demo's summary: demo name, options, particles and container.
+	Json SummaryHead(const std::string& demo, const DemoOptions& options) const;
 	/// The world (for inspection).
 	b2World& World() { return *m_world; }
 
