@@ -31,6 +31,34 @@ struct GranularScene::FloorMeter : b2ContactListener
 
 GranularScene::GranularScene(const GranularConfig& c) : m_config(c)
 {
+	BuildContainer(true);
+	// Particles: superellipses of random size (±spread) and orientation on a jittered lattice.
+	std::mt19937_64 rng(c.seed);
+	std::uniform_real_distribution<double> U(0.0, 1.0);
+	const double a0 = 0.5 * c.width, cell = 1.15 * c.width;
+	const int perRow = std::max(1, int((c.boxWidth - c.width) / cell));
+	for (int i = 0; i < c.particles; ++i)
+	{
+		const double s = 1.0 + c.sizeSpread * (2.0 * U(rng) - 1.0);
+		const double a = a0 * s, b = a / c.aspect;
+		ShapePtr shape = c.exponent == 2.0 ? ShapePtr(MakeEllipse(a, b)) : ShapePtr(MakeSuperellipse(a, b, c.exponent, c.exponent));
+		const int row = i / perRow, col = i % perRow;
+		const double x = -0.5 * (perRow - 1) * cell + col * cell + 0.1 * c.width * (U(rng) - 0.5);
+		const double y = c.width + row * cell + 0.1 * c.width * U(rng);
+		AddParticle(shape, Pose(Vec2(x, y), 2.0 * kPi * U(rng)));
+	}
+}
+
+GranularScene::GranularScene(const GranularConfig& c, const std::vector<ParticleState>& packing) : m_config(c)
+{
+	BuildContainer(false);
+	for (const ParticleState& p : packing)
+		AddParticle(p.shape, p.pose);
+}
+
+void GranularScene::BuildContainer(bool gate)
+{
+	const GranularConfig& c = m_config;
 	m_world = std::make_unique<b2World>(b2Vec2(0.0f, float(-c.gravity)));
 	m_world->SetAllowSleeping(false);
 	m_meter = std::make_unique<FloorMeter>();
@@ -43,7 +71,6 @@ GranularScene::GranularScene(const GranularConfig& c) : m_config(c)
 	b2EdgeShape edge;
 	b2FixtureDef fd;
 	fd.shape = &edge;
-	fd.friction = float(c.friction);
 	fd.restitutionThreshold = 1000.0f; // mm/s
 	const float w = float(0.5 * c.boxWidth), h = float(c.boxHeight), o = float(0.5 * c.outletWidth);
 	fd.friction = float(c.wallFriction);
@@ -58,44 +85,54 @@ GranularScene::GranularScene(const GranularConfig& c) : m_config(c)
 		m_meter->floor.push_back(m_container->CreateFixture(&fd));
 		edge.SetTwoSided(b2Vec2(o, 0.0f), b2Vec2(w, 0.0f));
 		m_meter->floor.push_back(m_container->CreateFixture(&fd));
-		edge.SetTwoSided(b2Vec2(-o, 0.0f), b2Vec2(o, 0.0f));
-		m_gate = m_container->CreateFixture(&fd);
-		m_meter->floor.push_back(m_gate);
+		if (gate)
+		{
+			edge.SetTwoSided(b2Vec2(-o, 0.0f), b2Vec2(o, 0.0f));
+			m_gate = m_container->CreateFixture(&fd);
+			m_meter->floor.push_back(m_gate);
+		}
 	}
 	else
 	{
 		edge.SetTwoSided(b2Vec2(-w, 0.0f), b2Vec2(w, 0.0f)); // no outlet: one closed floor
 		m_meter->floor.push_back(m_container->CreateFixture(&fd));
 	}
+}
 
-	// Particles: superellipses of random size (±spread) and orientation on a jittered lattice.
-	std::mt19937_64 rng(c.seed);
-	std::uniform_real_distribution<double> U(0.0, 1.0);
-	const double a0 = 0.5 * c.width, cell = 1.15 * c.width;
-	const int perRow = std::max(1, int((c.boxWidth - c.width) / cell));
-	for (int i = 0; i < c.particles; ++i)
-	{
-		const double s = 1.0 + c.sizeSpread * (2.0 * U(rng) - 1.0);
-		const double a = a0 * s, b = a / c.aspect;
-		ShapePtr shape = c.exponent == 2.0 ? ShapePtr(MakeEllipse(a, b)) : ShapePtr(MakeSuperellipse(a, b, c.exponent, c.exponent));
-		const int row = i / perRow, col = i % perRow;
-		const double x = -0.5 * (perRow - 1) * cell + col * cell + 0.1 * c.width * (U(rng) - 0.5);
-		const double y = c.width + row * cell + 0.1 * c.width * U(rng);
-		b2BodyDef pd;
-		pd.type = b2_dynamicBody;
-		pd.position.Set(float(x), float(y));
-		pd.angle = float(2.0 * kPi * U(rng));
-		b2Body* body = m_world->CreateBody(&pd);
-		b2FixtureDef pf;
-		pf.density = float(c.density);
-		pf.friction = float(c.friction);
-		pf.restitution = float(c.restitution);
-		pf.restitutionThreshold = 1000.0f;
-		AnalyticFixtureDef af;
-		af.shape = shape;
-		CreateAnalyticFixture(body, pf, af);
-		m_particles.push_back(body);
-	}
+void GranularScene::AddParticle(ShapePtr shape, const Pose& pose)
+{
+	const GranularConfig& c = m_config;
+	b2BodyDef pd;
+	pd.type = b2_dynamicBody;
+	pd.position.Set(float(pose.p.x), float(pose.p.y));
+	pd.angle = float(pose.q.Angle());
+	b2Body* body = m_world->CreateBody(&pd);
+	b2FixtureDef pf;
+	pf.density = float(c.density);
+	pf.friction = float(c.friction);
+	pf.restitution = float(c.restitution);
+	pf.restitutionThreshold = 1000.0f;
+	AnalyticFixtureDef af;
+	af.shape = std::move(shape);
+	m_shapes.push_back(af.shape);
+	CreateAnalyticFixture(body, pf, af);
+	m_particles.push_back(body);
+}
+
+std::vector<ParticleState> GranularScene::SaveState() const
+{
+	std::vector<ParticleState> out;
+	for (size_t i = 0; i < m_particles.size(); ++i)
+		out.push_back({m_shapes[i], GetAnalyticPose(m_particles[i]->GetFixtureList())});
+	return out;
+}
+
+double GranularScene::MeanParticleMass() const
+{
+	double m = 0.0;
+	for (const b2Body* b : m_particles)
+		m += b->GetMass();
+	return m_particles.empty() ? 0.0 : m / double(m_particles.size());
 }
 
 GranularScene::~GranularScene() = default;
@@ -129,6 +166,8 @@ void GranularScene::Step()
 			m_world->DestroyBody(m_particles[i]);
 			m_particles[i] = m_particles.back();
 			m_particles.pop_back();
+			m_shapes[i] = m_shapes.back();
+			m_shapes.pop_back();
 			++m_discharged;
 		}
 		else

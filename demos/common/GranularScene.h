@@ -49,6 +49,13 @@ struct Energies
 	double Total() const { return translational + rotational + potential; }
 };
 
+/// A particle of a saved packing: its shape and pose.
+struct ParticleState
+{
+	ShapePtr shape; ///< the shape
+	Pose pose;      ///< where it lies
+};
+
 /// The scene: a static container (two walls, a floor in two parts around the outlet, a gate
 /// over the outlet) and the particles, dropped from a loose lattice.
 class GranularScene
@@ -56,6 +63,12 @@ class GranularScene
 public:
 	/// Build the scene; particles start at rest on a jittered lattice above the floor.
 	explicit GranularScene(const GranularConfig& config);
+	/// Build the scene with the outlet open and the particles of a saved packing, at rest.
+	GranularScene(const GranularConfig& config, const std::vector<ParticleState>& packing);
+	/// The particles' shapes and poses, to start other scenes from.
+	std::vector<ParticleState> SaveState() const;
+	/// Mean particle mass.
+	double MeanParticleMass() const;
 	~GranularScene();
 
 	/// Advance one step.
@@ -94,12 +107,15 @@ public:
 
 private:
 	struct FloorMeter;
+	void BuildContainer(bool gate);
+	void AddParticle(ShapePtr shape, const Pose& pose);
 	GranularConfig m_config;
 	std::unique_ptr<b2World> m_world;
 	std::unique_ptr<FloorMeter> m_meter;
 	b2Body* m_container = nullptr;
 	b2Fixture* m_gate = nullptr;
 	std::vector<b2Body*> m_particles;
+	std::vector<ShapePtr> m_shapes; // each particle's shape, in the same order
 	double m_time = 0.0;
 	int m_discharged = 0;
 	int m_meterSteps = 0;

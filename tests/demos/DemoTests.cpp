@@ -107,6 +107,28 @@ TEST_CASE("b2a_demo_collision: fixed stepping finds the first contact within one
 	}
 }
 
+TEST_CASE("b2a_demo_beverloo: in the quick run the flow rate grows with the outlet and the fit is sane")
+{
+	const json s = RunDemo(B2A_DEMO_BEVERLOO, "beverloo");
+	CHECK(s["flow_grows_with_outlet"] == true);
+	double previous = 0.0;
+	for (const json& o : s["outlets"])
+	{
+		REQUIRE(o["Q"].is_number());
+		CHECK(o["Q"].get<double>() > previous); // Q grows with D
+		previous = o["Q"].get<double>();
+	}
+	// Beverloo: a positive empty-annulus coefficient of a few particle sizes, C of order one,
+	// and a fit that explains most of the variation.
+	CHECK(s["k"].get<double>() > 0.0);
+	CHECK(s["k"].get<double>() < 5.0);
+	CHECK(s["C"].get<double>() > 0.1);
+	CHECK(s["C"].get<double>() < 3.0);
+	CHECK(s["r2"].get<double>() > 0.9);
+	for (const char* f : {"flow.csv", "beverloo.svg", "packing.svg"})
+		CHECK(Exists(std::string("demo_out/beverloo/") + f));
+}
+
 TEST_CASE("demos reject bad options with a message and exit status 2")
 {
 	const std::string exe = B2A_DEMO_HOPPER;
