@@ -7,11 +7,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 using nlohmann::json;
 using b2a::tool::AnswerContactRequest;
@@ -32,7 +34,9 @@ json Ask(const std::string& line, bool expectOk = true)
 // Run the built program with a shell command line; returns its exit status and fills `out`.
 int RunTool(const std::string& args, const std::string& input, std::string& out)
 {
-	const std::string inPath = "tool_test_input.jsonl", outPath = "tool_test_output.jsonl";
+	// Scratch files in the system's temporary folder, named after this process.
+	const std::string base = (std::filesystem::temp_directory_path() / ("b2a_tool_test_" + std::to_string(getpid()))).string();
+	const std::string inPath = base + "_input.jsonl", outPath = base + "_output.jsonl";
 	{
 		std::ofstream f(inPath);
 		f << input;
@@ -179,7 +183,8 @@ TEST_CASE("the program answers every line in order and sets its exit status")
 	CHECK(json::parse(out.substr(first + 1, second - first - 1))["status"] == "error");
 	CHECK(json::parse(out.substr(second + 1))["id"] == 1);
 
-	CHECK(RunTool("tool_test_input.jsonl", "", out) == 0); // a file argument (here: empty)
+	const std::string file = (std::filesystem::temp_directory_path() / ("b2a_tool_test_" + std::to_string(getpid()) + "_input.jsonl")).string();
+	CHECK(RunTool("\"" + file + "\"", "", out) == 0); // a file argument (here: empty)
 	CHECK(RunTool("/nonexistent/requests.jsonl", "", out) == 2);
 	CHECK(RunTool("--frobnicate", "", out) == 2);
 	CHECK(RunTool("a.jsonl b.jsonl", "", out) == 2);
