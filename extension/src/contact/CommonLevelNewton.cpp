@@ -135,6 +135,13 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 			return result;
 		}
 	}
+	// A solution has opposed gradients; a point where both gradients are tiny (deep inside both
+	// particles) can satisfy the residual test with parallel ones.
+	if (!(Dot(Normalize(p.A.grad), Normalize(p.B.grad)) < -1.0 + 1e-6))
+	{
+		result.failure = "converged to a point where the gradients are not opposed";
+		return result;
+	}
 	result.status = SolveStatus::converged;
 	result.failure = "";
 	// Common levels are reported relative to the own levels (C ≤ 1 ⇔ touching).
