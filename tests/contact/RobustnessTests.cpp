@@ -459,3 +459,25 @@ TEST_CASE("fuzz: no NaN in any field for random pairs of every family, sizes 1e-
 	CHECK(convexOk == convexAll);
 	CHECK(convexAll > 40);
 }
+
+TEST_CASE("regression: Newton never reports convergence at a point with parallel gradients (thin particles, deep overlap)")
+{
+	// Found by a random stress run: a 700:1 superellipse and a thin n != m superellipse whose
+	// centres nearly coincide (common level 9.1e-5). Newton's residual test was met at a point
+	// where both gradients are tiny but point the same way; the true common level, which the
+	// min-max and grid solvers agree on, is 9.14258914525e-05.
+	SuperellipseShape a(5.862182501192625, 0.0083921172252187318, 5.8285195072834375, 5.8285195072834375);
+	SuperellipseShape b(3.7808904246430717, 0.2401122080947537, 15.668506954534768, 5.4362854956609397);
+	const Pose pa(Vec2(0.0, 0.0), 1.6526901519841188), pb(Vec2(-0.10624618428425103, -1.18452383843897), 2.9249518768690339);
+	const LevelResult minmax = SolveCommonLevelMinMax(a, pa, b, pb);
+	const LevelResult grid = SolveCommonLevelGrid(a, pa, b, pb);
+	REQUIRE(minmax.Ok());
+	REQUIRE(grid.Ok());
+	CHECK(RelativeError(grid.level, minmax.level) < 1e-9);
+	const LevelResult newton = SolveCommonLevelNewton(a, pa, b, pb);
+	if (newton.Ok())
+		CHECK(RelativeError(newton.level, minmax.level) < 1e-9);
+	const LevelResult automatic = SolveCommonLevel(a, pa, b, pb);
+	REQUIRE(automatic.Ok());
+	CHECK(RelativeError(automatic.level, minmax.level) < 1e-9);
+}
