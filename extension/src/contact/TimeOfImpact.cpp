@@ -129,11 +129,9 @@ TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b
 				const ContactResult chi = contactAt(hi);
 				if (chi.Ok() && chi.touching)
 				{
-					auto sep = [&](double s) {
-						const ContactResult cs = contactAt(s);
-						return cs.touching ? std::min(cs.separation, 0.0) : cs.separation;
-					};
-					const ScalarResult root = FindRootBrent(sep, t, hi, c.separation, std::min(chi.separation, 0.0),
+					// Touching contacts have separation ≤ 0 and apart ones > 0 (ContactResult).
+					auto sep = [&](double s) { return contactAt(s).separation; };
+					const ScalarResult root = FindRootBrent(sep, t, hi, c.separation, chi.separation,
 					                                        options.timeTolerance * std::max(tMax, 1e-300), 200);
 					out.iterations += root.iterations;
 					out.status = SolveStatus::converged;
