@@ -17,7 +17,10 @@
 #include <box2d/b2_fixture.h>
 #include <box2d/b2_polygon_shape.h>
 
+#include <map>
+#include <mutex>
 #include <new>
+#include <type_traits>
 
 namespace b2a
 {
@@ -63,6 +66,19 @@ void Write(const ContactManifold& m, b2Manifold* out, const b2Transform& xfA, co
 	out->pointCount = m.count;
 }
 
+// Analytic circles standing in for Box2D circle fixtures, one per radius for the whole process.
+// A contact only borrows one: it must not own anything (see m_circle).
+const Shape* CircleOfRadius(float radius)
+{
+	static std::mutex mutex;
+	static std::map<float, ShapePtr> cache;
+	std::lock_guard<std::mutex> lock(mutex);
+	ShapePtr& circle = cache[radius];
+	if (!circle)
+		circle = MakeCircle(radius);
+	return circle.get();
+}
+
 // Box2D polygon vertices (core, without skin) of a fixture's polygon.
 int PolygonVertices(const b2PolygonShape* s, Vec2* v)
 {
@@ -71,6 +87,9 @@ int PolygonVertices(const b2PolygonShape* s, Vec2* v)
 	return s->m_count;
 }
 } // namespace
+
+static_assert(std::is_trivially_destructible<WarmStart>::value && std::is_trivially_destructible<ManifoldCache>::value,
+              "Box2D does not run contact destructors when a world is destroyed");
 
 bool AnalyticContact::Install()
 {
@@ -96,7 +115,7 @@ AnalyticContact::AnalyticContact(b2Fixture* a, int32 indexA, b2Fixture* b, int32
 	{
 		const b2CircleShape* circle = static_cast<const b2CircleShape*>(b->GetShape());
 		if (circle->m_radius > 0.0f)
-			m_circle = MakeCircle(circle->m_radius);
+			m_circle = CircleOfRadius(circle->m_radius);
 	}
 }
 

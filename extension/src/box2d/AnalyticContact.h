@@ -44,7 +44,9 @@ private:
 	WarmStart m_warm;       // Newton's previous solution (analytic pairs)
 	Vec2 m_lastNormal;      // previous normal (analytic against polygon or edge), world
 	bool m_hasNormal = false;
-	ShapePtr m_circle;      // the analytic circle standing in for a Box2D circle fixture
+	// Box2D frees contacts without running their destructors when a world is destroyed, so
+	// every member here must be trivially destructible: the circle is borrowed from a cache.
+	const Shape* m_circle = nullptr; // the analytic circle standing in for a Box2D circle fixture
 	ManifoldCache m_patch;  // where last step's flat patch ended
 };
 
