@@ -79,6 +79,16 @@ struct SurfaceSamples
 
 	/// Number of samples.
 	int Count() const { return int(point.size()); }
+	/// The angles of sample k's two neighbours, unwrapped so that lo < angle[k] < hi: the bracket
+	/// in which a search refines what sample k found.
+	void NeighbourAngles(int k, double& lo, double& hi) const
+	{
+		const int n = Count();
+		lo = angle[(k + n - 1) % n];
+		hi = angle[(k + 1) % n];
+		if (lo > angle[k]) lo -= 2.0 * kPi;
+		if (hi < angle[k]) hi += 2.0 * kPi;
+	}
 };
 
 /// An analytic particle shape described by a level function λ(x) in its body frame.

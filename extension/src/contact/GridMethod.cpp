@@ -117,11 +117,9 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	double bestTheta = samples->angle[minima[0]], bestValue = value[minima[0]];
 	for (int k : minima)
 	{
-		double lo = samples->angle[(k + n - 1) % n], hi = samples->angle[(k + 1) % n];
-		const double mid = samples->angle[k];
-		if (lo > mid) lo -= 2.0 * kPi;
-		if (hi < mid) hi += 2.0 * kPi;
-		double theta = mid, v = value[k];
+		double lo, hi;
+		samples->NeighbourAngles(k, lo, hi);
+		double theta = samples->angle[k], v = value[k];
 		Refine(walk, lo, hi, theta, v);
 		if (v < bestValue)
 		{

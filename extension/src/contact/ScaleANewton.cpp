@@ -151,9 +151,8 @@ LevelResult SolveScaleANewton(const Shape& a, const Pose& pa, const Shape& b, co
 		// Narrow the start between the neighbouring samples, twice by eight: a thin particle's
 		// tip against another's side has a basin much narrower than the samples' spacing.
 		const int k = starts[s];
-		double lo = samples->angle[(k + n - 1) % n], hi = samples->angle[(k + 1) % n], mid = samples->angle[k];
-		if (lo > mid) lo -= 2.0 * kPi;
-		if (hi < mid) hi += 2.0 * kPi;
+		double lo, hi, mid = samples->angle[k];
+		samples->NeighbourAngles(k, lo, hi);
 		double bestLevel = level[k];
 		for (int round = 0; round < 2; ++round)
 		{

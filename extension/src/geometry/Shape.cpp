@@ -110,11 +110,8 @@ Vec2 Shape::Support(Vec2 d) const
 		const double v = Dot(d, samples->point[i]);
 		if (v > bestValue) { bestValue = v; best = i; }
 	}
-	double lo = samples->angle[(best + n - 1) % n];
-	double hi = samples->angle[(best + 1) % n];
-	const double mid = samples->angle[best];
-	if (lo > mid) lo -= 2.0 * kPi;
-	if (hi < mid) hi += 2.0 * kPi;
+	double lo, hi;
+	samples->NeighbourAngles(best, lo, hi);
 	const double L = m_surfaceLevel;
 	auto negProj = [&](double t) { return -Dot(d, SurfacePoint(t, L)); };
 	const ScalarResult r = MinimizeBrent(negProj, lo, hi, 1e-15, 1e-15, 200);
@@ -305,10 +302,8 @@ void Shape::Finalize(double boundingRadius, const MassProperties* mass)
 		int best = 0;
 		for (int i = 1; i < n; ++i)
 			if (Length(s->point[i]) > Length(s->point[best])) best = i;
-		double lo = s->angle[(best + n - 1) % n], hi = s->angle[(best + 1) % n];
-		const double mid = s->angle[best];
-		if (lo > mid) lo -= 2.0 * kPi;
-		if (hi < mid) hi += 2.0 * kPi;
+		double lo, hi;
+		s->NeighbourAngles(best, lo, hi);
 		auto negR = [&](double t) { return -Length(SurfacePoint(t, L)); };
 		const ScalarResult r = MinimizeBrent(negR, lo, hi, 1e-15, 1e-15, 200);
 		m_boundingRadius = std::max(-r.fx, Length(s->point[best]));
