@@ -1,7 +1,7 @@
 // b2analytic: the min–max (Perram–Wertheim) characterisation of the common level: the fallback.
 #include "b2analytic/CommonLevel.h"
 
-#include "contact/NewtonCore.h"
+#include "contact/SolverCore.h"
 #include "numerics/RootFinding.h"
 
 #include <algorithm>

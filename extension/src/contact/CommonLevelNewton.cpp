@@ -1,7 +1,7 @@
 // b2analytic: Newton–Raphson on the common level (paper eqs. 6–17), with step control.
 #include "b2analytic/CommonLevel.h"
 
-#include "contact/NewtonCore.h"
+#include "contact/SolverCore.h"
 #include "numerics/RootFinding.h"
 
 #include <Eigen/Dense>
@@ -154,9 +154,9 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 
 bool GeometricStart(const PairFrame& f, Vec2& xi, double& mu)
 {
-	const Vec2 ca = f.Xi(f.a.pose.p), cb = f.Xi(f.b.pose.p);
-	if (!(Length(cb - ca) > 1e-12))
+	if (CentresCoincide(*f.a.shape, f.a.pose, *f.b.shape, f.b.pose))
 		return false;
+	const Vec2 ca = f.Xi(f.a.pose.p), cb = f.Xi(f.b.pose.p);
 	// ψA − ψB goes from −ψB(cA) < 0 to ψA(cB) > 0 along the segment: one root.
 	auto phi = [&](double t) {
 		const Vec2 x = ca + t * (cb - ca);

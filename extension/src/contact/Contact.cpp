@@ -2,6 +2,8 @@
 #include "b2analytic/Contact.h"
 #include "b2analytic/SurfaceQueries.h"
 
+#include "contact/PairFrame.h"
+#include "contact/SolverCore.h"
 #include "numerics/RootFinding.h"
 
 #include <algorithm>
@@ -62,11 +64,6 @@ ContactResult Failed(const LevelResult& level)
 	c.failure = level.failure;
 	c.iterations = level.iterations;
 	return c;
-}
-
-bool Coincident(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb)
-{
-	return !(Distance(pa.p, pb.p) > 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius()));
 }
 
 // True when the body point lies on one of the shape's corners (the heart's tip and notch, the
@@ -179,23 +176,21 @@ ContactResult FlipContact(const ContactResult& c)
 
 ContactResult CircleContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions&, WarmStart*)
 {
-	// Closed form: the normal is the centre line, the points are the radii's ends, and the
-	// separation is d − rA − rB.
-	if (Coincident(a, pa, b, pb))
+	// Closed form: the level solution (the centre line, the point dividing it in the ratio of
+	// the radii), the radii's ends as points, and the separation d − rA − rB.
+	if (CentresCoincide(a, pa, b, pb))
 		return OverlapAxisContact(a, pa, b, pb);
+	const LevelResult level = CircleLevel(a, pa, b, pb);
 	const double ra = a.BoundingRadius(), rb = b.BoundingRadius();
-	const Vec2 d = pb.p - pa.p;
-	const double dist = Length(d);
 	ContactResult c;
-	c.status = SolveStatus::converged;
-	c.method = SolveMethod::closedForm;
-	c.normal = d / dist;
+	c.status = level.status;
+	c.method = level.method;
+	c.normal = level.normal;
+	c.point = level.point;
+	c.level = level.level;
 	c.pointA = pa.p + ra * c.normal;
 	c.pointB = pb.p - rb * c.normal;
-	c.point = pa.p + (ra / (ra + rb)) * d;
-	c.separation = dist - ra - rb;
-	const double s = dist / (ra + rb);
-	c.level = s * s;
+	c.separation = Distance(pa.p, pb.p) - ra - rb;
 	c.touching = c.separation <= 0.0;
 	return c;
 }
@@ -205,7 +200,7 @@ ContactResult ConvexContact(const Shape& a, const Pose& pa, const Shape& b, cons
 {
 	if (!a.IsSmoothConvex() || !b.IsSmoothConvex())
 		return GridContact(a, pa, b, pb, options, warm);
-	if (Coincident(a, pa, b, pb))
+	if (CentresCoincide(a, pa, b, pb))
 		return OverlapAxisContact(a, pa, b, pb);
 	const LevelResult level = SolveCommonLevel(a, pa, b, pb, MethodChoice::automatic, options, warm);
 	if (!level.Ok())
@@ -216,7 +211,7 @@ ContactResult ConvexContact(const Shape& a, const Pose& pa, const Shape& b, cons
 ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
                           WarmStart*)
 {
-	if (Coincident(a, pa, b, pb))
+	if (CentresCoincide(a, pa, b, pb))
 		return OverlapAxisContact(a, pa, b, pb);
 	// The grid method is one-sided (A rescaled onto B's surface). Run it both ways: the pair
 	// overlaps exactly when either way finds a level at or below the own level (a particle
@@ -309,7 +304,7 @@ ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, con
 		return GridContact(a, pa, b, pb, options, warm);
 	if (method == MethodChoice::newton)
 	{
-		if (Coincident(a, pa, b, pb))
+		if (CentresCoincide(a, pa, b, pb))
 			return OverlapAxisContact(a, pa, b, pb);
 		const LevelResult level = SolveCommonLevel(a, pa, b, pb, MethodChoice::newton, options, warm);
 		if (!level.Ok())

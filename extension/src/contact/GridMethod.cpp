@@ -1,6 +1,7 @@
 // b2analytic: the grid method (paper section 3) with local refinement, and its common level.
 #include "b2analytic/CommonLevel.h"
 
+#include "contact/PairFrame.h"
 #include "numerics/RootFinding.h"
 
 #include <algorithm>
@@ -146,7 +147,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 
 LevelResult SolveCommonLevelGrid(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)
 {
-	if (!(Distance(pa.p, pb.p) > 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius())))
+	if (CentresCoincide(a, pa, b, pb))
 	{
 		LevelResult r;
 		r.method = SolveMethod::grid;

@@ -1,12 +1,12 @@
 // b2analytic: choosing a level solver, and the names of statuses and methods.
 #include "b2analytic/CommonLevel.h"
 
+#include "contact/SolverCore.h"
+
 #include <cmath>
 
 namespace b2a
 {
-
-LevelResult SolveScaleANewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options);
 
 const char* StatusName(SolveStatus status)
 {
@@ -32,8 +32,6 @@ const char* MethodName(SolveMethod method)
 	}
 }
 
-namespace
-{
 // Two circles: the common level point divides the centre segment in the ratio of the radii,
 // X = cA + rA/(rA + rB)·(cB − cA), and C = (d / (rA + rB))².
 LevelResult CircleLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb)
@@ -56,7 +54,6 @@ LevelResult CircleLevel(const Shape& a, const Pose& pa, const Shape& b, const Po
 	r.multiplier = rb / ra; // |∇F_A| = 2s/rA, |∇F_B| = 2s/rB at the point, and ∇F_A + μ∇F_B = 0
 	return r;
 }
-} // namespace
 
 LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
                              const SolverOptions& options, WarmStart* warm)

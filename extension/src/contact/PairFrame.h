@@ -25,6 +25,13 @@ struct PosedShape
 	Pose pose;          ///< its pose
 };
 
+/// Centres closer than 1e-12 of the pair's mean bounding radius: no level point lies between
+/// them, and the solvers that need one say so.
+inline bool CentresCoincide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb)
+{
+	return !(Distance(pa.p, pb.p) > 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius()));
+}
+
 /// Two posed shapes in the frame X = origin + scale·ξ, with origin between the centres and scale
 /// the mean bounding radius: the solvers see sizes of order one whatever the units (1e-3 to 1e3).
 struct PairFrame

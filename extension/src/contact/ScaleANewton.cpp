@@ -1,7 +1,7 @@
 // b2analytic: Newton's method for the one-sided scale (A rescaled onto B's surface).
 #include "b2analytic/CommonLevel.h"
 
-#include "contact/NewtonCore.h"
+#include "contact/SolverCore.h"
 #include "contact/PairFrame.h"
 
 #include <Eigen/Dense>

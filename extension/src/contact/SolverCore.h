@@ -1,4 +1,4 @@
-// b2analytic: the Newton iteration shared by the common-level solvers (internal).
+// b2analytic: solver pieces shared between the contact sources (internal).
 #pragma once
 
 #include "b2analytic/ContactResult.h"
@@ -23,5 +23,11 @@ LevelResult RunNewton(const PairFrame& frame, Vec2 xi, double m, const SolverOpt
 /// The point between the centres where ψA = ψB, and μ balancing the gradients there.
 /// Returns false when the centres coincide.
 bool GeometricStart(const PairFrame& frame, Vec2& xi, double& mu);
+
+/// One-sided scale of A on B's surface by Newton (ScaleANewton.cpp).
+LevelResult SolveScaleANewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options);
+
+/// Common level of two circles in closed form; fails when the centres coincide exactly.
+LevelResult CircleLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb);
 
 } // namespace b2a
