@@ -58,6 +58,7 @@ int main(int argc, char** argv)
 	const int sample = 25, window = 250; // energies every 5 ms; floor force over the last 50 ms
 	while (true)
 	{
+		bool atRest = false;
 		if (step % sample == 0)
 		{
 			const Energies e = scene.ComputeEnergies();
@@ -69,21 +70,17 @@ int main(int argc, char** argv)
 			csv << scene.Time() << "," << e.translational << "," << e.rotational << "," << e.potential << "," << e.Total() << "\n";
 			released = e0.Total() - e.potential;
 			progress.Report(scene.Time() / duration, "kinetic energy " + std::to_string(e.translational + e.rotational));
-			// At rest: stop once the kinetic energy is a millionth of what the fall released,
-			// after a full window of floor force at rest.
-			if (scene.Time() > 0.2 && e.translational + e.rotational < 1e-6 * released && step % window == 0)
-			{
-				bottomForce = scene.TakeBottomForce();
-				break;
-			}
+			// At rest: the kinetic energy is a millionth of what the fall released, at the end of a
+			// full window of floor force.
+			atRest = scene.Time() > 0.2 && e.translational + e.rotational < 1e-6 * released && step % window == 0;
 		}
-		if (step % window == 0)
-			bottomForce = scene.TakeBottomForce();
-		if (scene.Time() >= duration)
+		if (atRest || scene.Time() >= duration)
 		{
 			bottomForce = scene.TakeBottomForce();
 			break;
 		}
+		if (step % window == 0)
+			scene.TakeBottomForce(); // start a new window
 		scene.Step();
 		++step;
 	}
