@@ -25,9 +25,33 @@
 //    contacts call (b2CollidePolygons and friends), so plain scenes step bit-identically.
 //  - The fixture's and body's user data stay the user's: the analytic data lives in the shape.
 //
-// What is allowed: create and destroy analytic fixtures like any fixture, while the world is
-// not locked (not inside Step or a callback); destroy bodies and worlds as usual (everything is
-// released). What is not: creating one on a null body or in a locked world (throws).
+// What is allowed:
+//  - Create analytic fixtures on dynamic, kinematic and static bodies between steps; destroy them
+//    with b2Body::DestroyFixture, their bodies with b2World::DestroyBody, and worlds as usual:
+//    everything the adapter holds is released with the fixture. A b2DestructionListener may
+//    still read GetAnalyticShape in SayGoodbye(b2Fixture*).
+//  - Share one shape among any number of fixtures, bodies and worlds (shapes are immutable); a
+//    ShapePtr you hold stays valid after the fixtures, bodies and worlds that used it are gone.
+//  - Everything Box2D allows on a fixture: SetDensity + ResetMassData (the mass stays analytic),
+//    SetFriction, SetRestitution, SetFilterData, SetSensor, user data, TestPoint, RayCast.
+//  - GetAnalyticShape on any fixture (null for plain fixtures and for a null pointer).
+// What is refused with an exception (the body and world are left unchanged):
+//  - MisuseError: a null body; a locked world (inside b2World::Step, i.e. in any contact
+//    listener callback); null arguments to DrawWorld.
+//  - InvalidParameter, naming the field and value: a null or too small/too large shape, a
+//    non-null def.shape, a non-finite local pose, a negative or non-finite density, friction,
+//    restitution or restitution threshold, bad patch parameters, a body whose pose is not finite.
+//    Bad shape parameters never get this far: the shape factories refuse them.
+// What is not allowed and cannot be detected (undefined behaviour, exactly as in Box2D, which
+// has no way to tell a dangling pointer from a live one):
+//  - using a b2Body* or b2Fixture* after DestroyBody/DestroyFixture or after its world was
+//    destroyed, including passing it to CreateAnalyticFixture, GetAnalyticShape or
+//    GetAnalyticPose; the const Shape* from GetAnalyticShape lives as long as its fixture (keep
+//    your own ShapePtr to outlive it);
+//  - changing the proxy polygon through b2Fixture::GetShape() (it must stay as created);
+//  - destroying fixtures or bodies inside Step callbacks: Box2D's DestroyFixture/DestroyBody
+//    assert on a locked world (or return silently when built without assertions), for analytic
+//    fixtures as for its own.
 #pragma once
 
 #include "b2analytic/ContactResult.h"
@@ -45,7 +69,8 @@ class b2World;
 namespace b2a
 {
 
-/// Thrown when the Box2D API is used in a way the adapter cannot honour (null body, locked world).
+/// Thrown when the Box2D API is used in a way the adapter cannot honour (null body, locked world,
+/// null arguments).
 class MisuseError : public std::logic_error
 {
 public:
@@ -75,8 +100,10 @@ struct AnalyticFixtureDef
 /// restitution, restitution threshold, filter, sensor flag, user data) except `def.shape`,
 /// which must be null: the analytic shape takes its place. With density > 0 the body's mass
 /// data comes from the analytic area, centroid and second moment. Throws InvalidParameter for a
-/// missing shape, a non-null def.shape or a shape too small for Box2D's tolerances, and
-/// MisuseError for a null body or a locked world.
+/// missing shape, a non-null def.shape, a shape too small for Box2D's tolerances or too large for
+/// its float mass data, a non-finite local pose or body pose, a negative or non-finite density,
+/// friction, restitution or restitution threshold, and MisuseError for a null body or a locked
+/// world (see "What is allowed" above). `body` must be a live body of a live world.
 b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const AnalyticFixtureDef& analytic);
 
 /// Shorthand: an analytic fixture at the body origin with the given density.

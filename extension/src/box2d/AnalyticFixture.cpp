@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace b2a
@@ -65,6 +67,19 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 	const Pose& local = analytic.local;
 	if (!IsFinite(local.p) || !std::isfinite(local.q.c) || !std::isfinite(local.q.s))
 		throw InvalidParameter("CreateAnalyticFixture", "local", "must be a finite pose", local.p.x + local.p.y + local.q.c + local.q.s);
+	// Box2D checks none of these: a negative density gives a negative mass (its assertions, or
+	// silently wrong dynamics), a negative friction NaN mixed friction (sqrt of a product).
+	const std::pair<const char*, float> material[] = {{"density", def.density},
+	                                                   {"friction", def.friction},
+	                                                   {"restitution", def.restitution},
+	                                                   {"restitutionThreshold", def.restitutionThreshold}};
+	for (const auto& [field, value] : material)
+		if (!std::isfinite(value) || value < 0.0f)
+			throw InvalidParameter("CreateAnalyticFixture", field, "must be finite and >= 0", value);
+	const b2Transform& xf = body->GetTransform();
+	if (!std::isfinite(xf.p.x) || !std::isfinite(xf.p.y) || !std::isfinite(xf.q.c) || !std::isfinite(xf.q.s))
+		throw InvalidParameter("CreateAnalyticFixture", "body", "must have a finite position and angle, position x + y",
+		                       double(xf.p.x) + double(xf.p.y));
 	if (!std::isfinite(analytic.patchTolerance) || analytic.patchTolerance < 0.0)
 		throw InvalidParameter("CreateAnalyticFixture", "patchTolerance", "must be finite and >= 0", analytic.patchTolerance);
 	if (!std::isfinite(analytic.patchMinWidth) || analytic.patchMinWidth < 0.0)
@@ -75,6 +90,12 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 	if (!(shape.BoundingRadius() >= 2.0 * b2_linearSlop))
 		throw InvalidParameter("CreateAnalyticFixture", "shape", "must be at least 2 * b2_linearSlop (0.01 length units) in bounding radius "
 		                       "(use smaller length units), bounding radius",
+		                       shape.BoundingRadius());
+	// Box2D keeps mass data in float: mass and the moment about the body origin must not overflow.
+	const double reach = shape.BoundingRadius() + Length(local.p);
+	const double moment = double(def.density) * shape.Mass().area * reach * reach;
+	if (!(float(reach) < std::numeric_limits<float>::max() && float(moment) < std::numeric_limits<float>::max()))
+		throw InvalidParameter("CreateAnalyticFixture", "shape", "is too large for Box2D's float mass data, bounding radius",
 		                       shape.BoundingRadius());
 
 	// The proxy: Box2D's time of impact stops bodies when proxy cores come within
