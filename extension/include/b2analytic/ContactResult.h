@@ -98,6 +98,8 @@ struct SolverOptions
 	double stepTolerance = 1e-13;  ///< Newton stops when a full step moves the point less than this times the pair's size
 	int gridSamples = 256;         ///< surface samples for the grid method (≥ 8)
 	int gridCandidates = 4;        ///< local minima of the samples refined by the grid method
+	bool gridRefine = true;        ///< refine the grid minimum between samples (false: the paper's plain
+	                               ///< grid method, whose point is off by up to a sample spacing)
 };
 
 } // namespace b2a

@@ -121,7 +121,8 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		double lo, hi;
 		samples->NeighbourAngles(k, lo, hi);
 		double theta = samples->angle[k], v = value[k];
-		Refine(walk, lo, hi, theta, v);
+		if (options.gridRefine)
+			Refine(walk, lo, hi, theta, v);
 		if (v < bestValue)
 		{
 			bestValue = v;
