@@ -230,10 +230,13 @@ void AnalyticContact::Evaluate(b2Manifold* manifold, const b2Transform& xfA, con
 			count = 2;
 			if (edge.m_oneSided)
 			{
-				// One-sided edges (chain links) collide only on their right side, as in Box2D.
+				// One-sided edges (chain links) collide only with particles whose centroid lies on
+				// their right side, as Box2D decides for its polygons (b2CollideEdgeAndPolygon). The
+				// centroid, not the shape's origin: a heart's origin lies well below its centroid.
 				const Vec2 e = vertices[1] - vertices[0];
 				const Vec2 front(e.y, -e.x);
-				if (Dot(ToBody(posePlain, poseAnalytic.p) - vertices[0], front) < 0.0)
+				const Vec2 centroid = ToWorld(poseAnalytic, proxy->Data().shape->Mass().centroid);
+				if (Dot(ToBody(posePlain, centroid) - vertices[0], front) < 0.0)
 					return;
 			}
 		}
