@@ -50,7 +50,7 @@ and overlapping poses it reports a contact for (GJK: the near-tangent ones). fai
 overlapping pose is a failure for it.
 
 Options: --out DIR, --seed N, --quick (under a minute), --poses N (per class and family),
---repeats N. Writes DIR/pairs.csv, DIR/pairs.md and DIR/pairs_<family>.svg.
+--repeats N, --families NAME,NAME (only these, e.g. ellipse_a3,superellipse_n4). Writes DIR/pairs.csv, DIR/pairs.md and DIR/pairs_<family>.svg.
 )";
 
 // ------------------------------------------------------------------------------------------
@@ -507,15 +507,31 @@ struct Row
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_bench_pairs", kHelp, {"poses", "repeats"});
-	const int perClass = int(opt.Number("poses", opt.quick ? 8 : 40, 1, 100000));
-	const int repeats = int(opt.Number("repeats", opt.quick ? 3 : 9, 1, 1000));
+	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_bench_pairs", kHelp, {"--poses", "--repeats", "--families"});
+	const int perClass = int(opt.Number("--poses", opt.quick ? 8 : 40, 1, 100000));
+	const int repeats = int(opt.Number("--repeats", opt.quick ? 3 : 9, 1, 1000));
 	const int motions = opt.quick ? 4 : 8;
 	const MachineInfo machine = GetMachineInfo();
 	Progress progress("b2a_bench_pairs");
 	std::mt19937_64 rng(opt.seed);
 
 	std::vector<Family> families = Families();
+	if (opt.extra.count("--families"))
+	{
+		// Only the families named (comma-separated), in the table's order.
+		const std::string wanted = "," + opt.extra.at("--families") + ",";
+		std::vector<Family> chosen;
+		for (Family& f : families)
+			if (wanted.find("," + f.name + ",") != std::string::npos)
+				chosen.push_back(std::move(f));
+		if (chosen.empty())
+		{
+			std::fprintf(stderr, "b2a_bench_pairs: --families '%s' names no pair family (see --help)\n",
+			             opt.extra.at("--families").c_str());
+			return 2;
+		}
+		families = std::move(chosen);
+	}
 	std::vector<Row> rows;
 	for (size_t fi = 0; fi < families.size(); ++fi)
 	{

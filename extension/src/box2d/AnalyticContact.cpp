@@ -179,6 +179,11 @@ void AnalyticContact::Evaluate(b2Manifold* manifold, const b2Transform& xfA, con
 	{
 		// Analytic against analytic: the contact core, warm-started from the last step.
 		const Pose poseA = pa->WorldPose(xfA), poseB = pb->WorldPose(xfB);
+		// Bounding circles apart: no contact, and no solve. The tight AABBs of the broad phase
+		// overlap for many pairs whose particles are apart (elongated ones especially).
+		const double reach = pa->Data().shape->BoundingRadius() + pb->Data().shape->BoundingRadius();
+		if (LengthSquared(poseB.p - poseA.p) > reach * reach)
+			return;
 		c = ComputeContact(*pa->Data().shape, poseA, *pb->Data().shape, poseB, MethodChoice::automatic, pa->Data().solver, &m_warm);
 		sideA = {pa->Data().shape.get(), poseA};
 		sideB = {pb->Data().shape.get(), poseB};

@@ -3,10 +3,8 @@
 
 #include "contact/SolverCore.h"
 #include "numerics/RootFinding.h"
+#include "numerics/SmallLinear.h"
 
-#include <Eigen/Dense>
-
-#include <algorithm>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -22,27 +20,36 @@ struct NewtonPoint
 	Vec2 xi;
 	double m = 0.0;
 	GaugeValue A, B;
-	Eigen::Vector3d r;
+	double r[3] = {0.0, 0.0, 0.0};
 	double relative = 0.0; // residual relative to the size of its terms
 	bool finite = false;
 };
 
-NewtonPoint Evaluate(const PairFrame& f, Vec2 xi, double m)
+// The residual at a point whose shapes are evaluated, for multiplier e^m (μ enters only here,
+// so trying another multiplier at the same point costs no shape evaluation).
+NewtonPoint WithMultiplier(NewtonPoint p, double m)
 {
-	NewtonPoint p;
-	p.xi = xi;
 	p.m = m;
-	p.A = f.Eval(f.a, xi, true);
-	p.B = f.Eval(f.b, xi, true);
 	const double mu = std::exp(m);
 	const Vec2 r12 = p.A.grad + mu * p.B.grad;
 	const double r3 = p.A.psi - p.B.psi;
-	p.r = Eigen::Vector3d(r12.x, r12.y, r3);
+	p.r[0] = r12.x;
+	p.r[1] = r12.y;
+	p.r[2] = r3;
 	const double gradScale = LengthSquared(p.A.grad) + mu * mu * LengthSquared(p.B.grad) + 1e-300;
 	const double levelScale = p.A.psi * p.A.psi + p.B.psi * p.B.psi + 1e-300;
 	p.relative = std::sqrt(LengthSquared(r12) / gradScale + r3 * r3 / levelScale);
 	p.finite = p.A.finite && p.B.finite && std::isfinite(mu) && std::isfinite(p.relative);
 	return p;
+}
+
+NewtonPoint Evaluate(const PairFrame& f, Vec2 xi, double m)
+{
+	NewtonPoint p;
+	p.xi = xi;
+	p.A = f.Eval(f.a, xi, true);
+	p.B = f.Eval(f.b, xi, true);
+	return WithMultiplier(p, m);
 }
 } // namespace
 
@@ -69,29 +76,27 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 			const double mLs = muLs > 0.0 ? std::log(muLs) : p.m;
 			if (mLs != p.m && std::isfinite(mLs))
 			{
-				const NewtonPoint q = Evaluate(f, p.xi, mLs);
+				const NewtonPoint q = WithMultiplier(p, mLs);
 				if (q.finite && q.relative < p.relative)
 					p = q;
 			}
 		}
 		const double mu = std::exp(p.m);
 		// Jacobian of (∇ψA + μ∇ψB, third equation) with respect to (ξ, m).
-		Eigen::Matrix3d J;
 		const Sym22 H = p.A.hess + mu * p.B.hess;
 		const Vec2 dmu = mu * p.B.grad;
 		const Vec2 row3 = p.A.grad - p.B.grad;
-		J << H.xx, H.xy, dmu.x,
-		     H.xy, H.yy, dmu.y,
-		     row3.x, row3.y, 0.0;
-		const Eigen::FullPivLU<Eigen::Matrix3d> lu(J);
-		if (!(lu.rcond() > 1e-14))
+		const double J[3][3] = {{H.xx, H.xy, dmu.x}, {H.xy, H.yy, dmu.y}, {row3.x, row3.y, 0.0}};
+		const double minusR[3] = {-p.r[0], -p.r[1], -p.r[2]};
+		const Solve3Result step = Solve3(J, minusR);
+		if (!(step.rcond > 1e-14))
 		{
 			if (p.relative < 1e-11)
 				break; // already solved: the Jacobian is singular only at the answer's rounding level
 			result.failure = "singular or ill-conditioned Jacobian";
 			return result;
 		}
-		Eigen::Vector3d delta = lu.solve(-p.r);
+		double delta[3] = {step.x[0], step.x[1], step.x[2]};
 		// Trust region: at most half the pair's size or of the distance between the centres
 		// (whichever is larger) in ξ, and a factor e² in μ.
 		double limit = 1.0;
@@ -99,7 +104,8 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 		if (stepXi > trust) limit = std::min(limit, trust / stepXi);
 		const double mLimit = 2.0;
 		if (std::fabs(delta[2]) > mLimit) limit = std::min(limit, mLimit / std::fabs(delta[2]));
-		delta *= limit;
+		for (double& d : delta)
+			d *= limit;
 		// Backtracking line search on the residual with row weights frozen at the current point
 		// (for any fixed positive weights the Newton direction descends).
 		const double w12 = 1.0 / (LengthSquared(p.A.grad) + mu * mu * LengthSquared(p.B.grad) + 1e-300);

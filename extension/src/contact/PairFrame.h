@@ -82,7 +82,7 @@ struct PairFrame
 		}
 		else if (g.lambda > 0.0)
 		{
-			g.psi = std::pow(g.lambda, 1.0 / q);
+			g.psi = PsiOfPositive(g.lambda);
 			const double d1 = g.psi / (q * g.lambda);
 			const double d2 = d1 * (1.0 / q - 1.0) / g.lambda;
 			if (withHessian)
@@ -106,8 +106,10 @@ struct PairFrame
 		const double lambda = LevelUnit(ps) * ps.shape->Level(ToBody(ps.pose, World(xi)));
 		const double q = power;
 		if (q == 1.0) return lambda;
-		return lambda > 0.0 ? std::pow(lambda, 1.0 / q) : 0.0;
+		return lambda > 0.0 ? PsiOfPositive(lambda) : 0.0;
 	}
+	/// λ^{1/q} for λ > 0: a square root for the commonest power (ellipses, q = 2).
+	double PsiOfPositive(double lambda) const { return power == 2.0 ? std::sqrt(lambda) : std::pow(lambda, 1.0 / power); }
 	/// Levels are measured in units of the shape's own surface level (when that is positive), so
 	/// that "touching" is "common level ≤ 1" for every pair; the superellipse family is unchanged.
 	static double LevelUnit(const PosedShape& ps)
@@ -120,7 +122,7 @@ struct PairFrame
 	{
 		const double q = power;
 		if (q == 1.0) return level;
-		return level > 0.0 ? std::pow(level, 1.0 / q) : 0.0;
+		return level > 0.0 ? PsiOfPositive(level) : 0.0;
 	}
 };
 
