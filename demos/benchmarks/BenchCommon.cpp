@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
+#include <time.h>
 
 #ifndef B2A_BUILD_FLAGS
 #define B2A_BUILD_FLAGS "unknown"
@@ -45,6 +46,13 @@ demo::Json MachineJson(const MachineInfo& machine)
 	json["cores"] = machine.cores;
 	json["build_flags"] = machine.buildFlags;
 	return json;
+}
+
+double ThreadCpuNanoseconds()
+{
+	timespec t{};
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+	return 1e9 * double(t.tv_sec) + double(t.tv_nsec);
 }
 
 double Median(std::vector<double> values)

@@ -32,7 +32,8 @@ For each pair family (circles, ellipses of aspect 1.5 to 1000, superellipses wit
 unequal and non-integer exponents, hearts) it poses pairs from a fixed seed: separated
 (gaps of 2% to 50% of the size), near-tangent (gap below 1e-12 of the size) and overlapping
 (1% to 25% of the size), and from each a sequence of small motions for warm starts. Every
-method is timed over the same poses (median of repeats, nanoseconds per query) and its
+method is timed over the same poses (median of repeats, nanoseconds of thread CPU time per
+query, so that other work on the machine does not inflate it) and its
 answers are compared with long-double references:
   newton_cold, newton_warm  Newton on the common level (warm: carried along the motions)
   auto, auto_warm           the automatic path the Box2D adapter uses
@@ -619,7 +620,7 @@ int main(int argc, char** argv)
 	text += "Run: `b2a_bench_pairs" + std::string(opt.quick ? " --quick" : "") + " --seed " + std::to_string(opt.seed) +
 	        "`, " + std::to_string(perClass) + " poses per class (separated, near-tangent, overlapping) and family, " +
 	        std::to_string(motions) + " warm-start motions each, median of " + std::to_string(repeats) +
-	        " repeats.\n\n";
+	        " repeats of the thread's CPU time.\n\n";
 	text += "Errors are relative to the pair's size (mean bounding radius); normal errors in radians. Our methods "
 	        "are compared over all poses with the long-double reference of the level they solve; Box2D's over the "
 	        "near-tangent and overlapping poses it reports a contact for (its point: the deepest manifold point, "
