@@ -92,12 +92,15 @@ bool ConvexLineExtreme(const Shape& s, const Pose& ps, Vec2 X, Vec2 dir, double 
 {
 	const Vec2 localDir = InvRotate(ps.q, dir);
 	const double own = s.SurfaceLevel();
+	// Level and slope from one evaluation per iterate; stop where the step or the level is at
+	// rounding (a level within 4 eps of the own level is on the surface to rounding).
+	const double tol = 1e-15 * reach, levelTol = 4.0 * std::numeric_limits<double>::epsilon() * std::fabs(own);
 	t = 0.0;
+	LevelDerivatives d = s.Derivatives(ToBody(ps, X));
 	double g = g0;
-	const double tol = 1e-15 * reach;
 	for (int it = 0; it < 30; ++it)
 	{
-		const double slope = Dot(s.Gradient(ToBody(ps, X + t * dir)), localDir);
+		const double slope = Dot(d.gradient, localDir);
 		if (!(slope > 0.0) || !std::isfinite(g))
 			return false;
 		const double step = g / slope;
@@ -111,8 +114,9 @@ bool ConvexLineExtreme(const Shape& s, const Pose& ps, Vec2 X, Vec2 dir, double 
 		t = next;
 		if (std::fabs(step) <= tol)
 			return true;
-		g = s.Level(ToBody(ps, X + t * dir)) - own;
-		if (g == 0.0)
+		d = s.Derivatives(ToBody(ps, X + t * dir));
+		g = d.value - own;
+		if (std::fabs(g) <= levelTol)
 			return true;
 	}
 	return false;
