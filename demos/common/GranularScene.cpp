@@ -112,18 +112,75 @@ void GranularScene::AddParticle(ShapePtr shape, const Pose& pose)
 	pf.friction = float(c.friction);
 	pf.restitution = float(c.restitution);
 	pf.restitutionThreshold = 1000.0f;
-	AnalyticFixtureDef af;
-	af.shape = std::move(shape);
-	m_shapes.push_back(af.shape);
-	CreateAnalyticFixture(body, pf, af);
+	if (c.polygonVertices > 0)
+	{
+		const b2PolygonShape polygon = InscribedPolygon(*shape, c.polygonVertices);
+		pf.shape = &polygon;
+		body->CreateFixture(&pf);
+	}
+	else
+	{
+		AnalyticFixtureDef af;
+		af.shape = shape;
+		CreateAnalyticFixture(body, pf, af);
+	}
+	m_shapes.push_back(std::move(shape));
 	m_particles.push_back(body);
+}
+
+b2PolygonShape InscribedPolygon(const Shape& shape, int vertices)
+{
+	if (vertices < 3 || vertices > b2_maxPolygonVertices)
+		throw InvalidParameter("InscribedPolygon", "vertices", "must be in [3, " + std::to_string(b2_maxPolygonVertices) + "]",
+		                       vertices);
+	// Vertex k at the polar angle of (a cos t, b sin t), t = 2πk/N, on the extents a, b along the
+	// body axes: an affine image of the regular N-gon, which an affine map takes from the circle
+	// to the ellipse (hence largest area there).
+	const double a = shape.Support(Vec2(1.0, 0.0)).x, b = shape.Support(Vec2(0.0, 1.0)).y;
+	b2Vec2 points[b2_maxPolygonVertices];
+	for (int k = 0; k < vertices; ++k)
+	{
+		const double t = 2.0 * kPi * k / vertices;
+		const Vec2 p = shape.SurfacePoint(std::atan2(b * std::sin(t), a * std::cos(t)));
+		points[k].Set(float(p.x), float(p.y));
+	}
+	b2PolygonShape polygon;
+	polygon.Set(points, vertices);
+	return polygon;
+}
+
+Pose GranularScene::ParticlePose(size_t i) const
+{
+	const b2Fixture* f = m_particles[i]->GetFixtureList();
+	if (GetAnalyticShape(f))
+		return GetAnalyticPose(f);
+	const b2Transform& xf = m_particles[i]->GetTransform(); // a polygon particle: shape frame = body frame
+	Rot q;
+	q.c = xf.q.c;
+	q.s = xf.q.s;
+	return Pose(Vec2(xf.p.x, xf.p.y), q);
+}
+
+std::vector<Vec2> GranularScene::ParticleOutline(size_t i) const
+{
+	const b2Fixture* f = m_particles[i]->GetFixtureList();
+	if (GetAnalyticShape(f))
+		return Outline(*m_shapes[i], GetAnalyticPose(f), 0.0 / 0.0, 20);
+	const b2PolygonShape* polygon = static_cast<const b2PolygonShape*>(f->GetShape());
+	std::vector<Vec2> outline;
+	for (int32 k = 0; k < polygon->m_count; ++k)
+	{
+		const b2Vec2 v = b2Mul(m_particles[i]->GetTransform(), polygon->m_vertices[k]);
+		outline.push_back(Vec2(v.x, v.y));
+	}
+	return outline;
 }
 
 std::vector<ParticleState> GranularScene::SaveState() const
 {
 	std::vector<ParticleState> out;
 	for (size_t i = 0; i < m_particles.size(); ++i)
-		out.push_back({m_shapes[i], GetAnalyticPose(m_particles[i]->GetFixtureList())});
+		out.push_back({m_shapes[i], ParticlePose(i)});
 	return out;
 }
 
@@ -147,6 +204,8 @@ Json GranularScene::SummaryHead(const std::string& demo, const DemoOptions& opti
 	j["particles"] = c.particles;
 	j["particle"] = {{"shape", c.exponent == 2.0 ? "ellipse" : "superellipse"}, {"exponent", c.exponent}, {"mean_width_mm", c.width},
 	                 {"aspect", c.aspect}, {"size_spread", c.sizeSpread}};
+	if (c.polygonVertices > 0)
+		j["particle"]["box2d_polygon_vertices"] = c.polygonVertices;
 	j["box_width_mm"] = c.boxWidth;
 	j["time_step_s"] = c.dt;
 	return j;
@@ -229,9 +288,9 @@ double GranularScene::PackingFraction() const
 	if (!(cut > 0.0))
 		return 0.0;
 	double area = 0.0;
-	for (const b2Body* b : m_particles)
-		if (b->GetPosition().y < cut && b->GetPosition().y > 0.0)
-			area += GetAnalyticShape(b->GetFixtureList())->Mass().area;
+	for (size_t i = 0; i < m_particles.size(); ++i)
+		if (m_particles[i]->GetPosition().y < cut && m_particles[i]->GetPosition().y > 0.0)
+			area += m_shapes[i]->Mass().area;
 	return area / (m_config.boxWidth * cut);
 }
 
@@ -265,13 +324,12 @@ void GranularScene::WriteSnapshot(const std::string& path, const std::string& ti
 	svg.Polyline({Vec2(o, 0.0), Vec2(w, 0.0), Vec2(w, top)}, wall);
 	if (m_gate)
 		svg.Polyline({Vec2(-o, 0.0), Vec2(o, 0.0)}, {"none", "#999999", 2.0, "4,3", 1.0});
-	for (const b2Body* b : m_particles)
+	for (size_t i = 0; i < m_particles.size(); ++i)
 	{
-		const b2Fixture* f = b->GetFixtureList();
 		// Colour by speed: resting particles blue, moving ones orange.
-		const double speed = b->GetLinearVelocity().Length();
+		const double speed = m_particles[i]->GetLinearVelocity().Length();
 		const bool moving = speed > 5.0; // mm/s
-		svg.Polygon(Outline(*GetAnalyticShape(f), GetAnalyticPose(f), 0.0 / 0.0, 20),
+		svg.Polygon(ParticleOutline(i),
 		            {moving ? "#f28e2b" : "#4e79a7", "#1f1f1f", 0.4, "", 0.85});
 	}
 	svg.Label(10, 20, title, 15);

@@ -37,7 +37,17 @@ struct GranularConfig
 	int velocityIterations = 8;    ///< Box2D velocity iterations
 	int positionIterations = 3;    ///< Box2D position iterations
 	std::uint64_t seed = 1;        ///< random seed (sizes, orientations, placement jitter)
+	/// 0: analytic particles. 3 to b2_maxPolygonVertices: each particle a plain Box2D polygon
+	/// with this many vertices on the same shape's surface (InscribedPolygon), the baseline the
+	/// benchmarks compare against; sizes, orientations and placement are the same.
+	int polygonVertices = 0;
 };
+
+/// A Box2D polygon with `vertices` (3 to b2_maxPolygonVertices) points on the shape's own
+/// surface: the polar directions of an affine-regular polygon on the shape's axis extents
+/// (for an ellipse, the inscribed polygon of largest area; for a superellipse of exponent 4,
+/// the 8-gon takes its four corners). Box2D adds its usual skin (b2_polygonRadius).
+b2PolygonShape InscribedPolygon(const Shape& shape, int vertices);
 
 /// Energies of the particles (μJ for g, mm, s: 1 g·mm²/s² = 1e-9 J; reported as is).
 struct Energies
@@ -88,7 +98,8 @@ public:
 	int Discharged() const { return m_discharged; }
 	/// Particles still in the container.
 	int Remaining() const { return int(m_particles.size()); }
-	/// Area fraction of the particles below 80 % of the pile's height.
+	/// Area fraction of the particles below 80 % of the pile's height (from the shapes' analytic
+	/// areas, also for polygon particles).
 	double PackingFraction() const;
 	/// Height of the highest particle centre above the floor.
 	double PileHeight() const;
@@ -109,6 +120,8 @@ private:
 	struct FloorMeter;
 	void BuildContainer(bool gate);
 	void AddParticle(ShapePtr shape, const Pose& pose);
+	Pose ParticlePose(size_t i) const;
+	std::vector<Vec2> ParticleOutline(size_t i) const;
 	GranularConfig m_config;
 	std::unique_ptr<b2World> m_world;
 	std::unique_ptr<FloorMeter> m_meter;
