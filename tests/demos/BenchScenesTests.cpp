@@ -1,0 +1,185 @@
+// b2analytic tests: the whole-scene benchmark in its quick mode: its table has the promised
+// columns and rows, its timings are finite and positive, both variants keep every particle, and
+// the 8-gons are the inscribed polygons of the particles' shapes.
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#ifdef B2A_BENCH_SCENES // the benchmarks are optional (B2A_BUILD_BENCHMARKS)
+
+namespace
+{
+using Row = std::map<std::string, std::string>;
+
+std::vector<std::string> SplitCsvLine(const std::string& line)
+{
+	std::vector<std::string> cells;
+	std::stringstream in(line);
+	std::string cell;
+	while (std::getline(in, cell, ','))
+		cells.push_back(cell);
+	return cells;
+}
+
+// The CSV as rows keyed by column name; `header` receives the column names.
+std::vector<Row> ReadCsv(const std::string& path, std::vector<std::string>& header)
+{
+	std::ifstream f(path);
+	REQUIRE(f.good());
+	std::string line;
+	REQUIRE(std::getline(f, line));
+	header = SplitCsvLine(line);
+	std::vector<Row> rows;
+	while (std::getline(f, line))
+	{
+		const std::vector<std::string> cells = SplitCsvLine(line);
+		REQUIRE(cells.size() == header.size());
+		Row row;
+		for (size_t i = 0; i < cells.size(); ++i)
+			row[header[i]] = cells[i];
+		rows.push_back(row);
+	}
+	return rows;
+}
+
+double Number(const Row& row, const std::string& column)
+{
+	const std::string& text = row.at(column);
+	char* end = nullptr;
+	const double v = std::strtod(text.c_str(), &end);
+	INFO("column " << column << " = '" << text << "'");
+	REQUIRE(*end == '\0');
+	return v;
+}
+
+int ExitStatus(const std::string& args)
+{
+	const std::string cmd = std::string("\"") + B2A_BENCH_SCENES + "\" " + args + " > /dev/null 2>&1";
+	return WEXITSTATUS(std::system(cmd.c_str()));
+}
+} // namespace
+
+TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants and keeps every particle")
+{
+	const std::string out = "demo_out/bench_scenes";
+	std::filesystem::remove_all(out);
+	std::filesystem::create_directories("demo_out");
+	const std::string cmd =
+		std::string("\"") + B2A_BENCH_SCENES + "\" --quick --out " + out + " > " + out + ".stdout 2> " + out + ".stderr";
+	INFO("command: " << cmd);
+	REQUIRE(std::system(cmd.c_str()) == 0);
+
+	std::vector<std::string> header;
+	const std::vector<Row> rows = ReadCsv(out + "/scenes.csv", header);
+	const std::vector<std::string> columns = {
+		"scene", "particle", "count", "variant", "box_width_mm", "outlet_mm", "window_start_step", "window_steps", "bodies",
+		"touching_contacts_per_particle", "contact_pairs_per_particle", "step_ms", "step_mean_ms", "collide_ms", "solve_ms",
+		"broadphase_ms", "collide_median_ms", "solve_median_ms", "solve_toi_ms", "us_per_particle_step", "step_vs_polygon8",
+		"collide_vs_polygon8", "solve_vs_polygon8", "growth_vs_smallest", "particles_end", "discharged", "nonfinite", "escaped",
+		"run_s"};
+	CHECK(header == columns);
+
+	// Quick: the smallest count only, each scene once per variant, in that order.
+	REQUIRE(rows.size() == 4);
+	const char* scenes[] = {"packing", "packing", "hopper", "hopper"};
+	const char* variants[] = {"analytic", "polygon8", "analytic", "polygon8"};
+	std::map<std::string, double> polygonStep, polygonCollide;
+	for (size_t i = 0; i < rows.size(); ++i)
+	{
+		const Row& r = rows[i];
+		CAPTURE(i);
+		CHECK(r.at("scene") == scenes[i]);
+		CHECK(r.at("variant") == variants[i]);
+		const double count = Number(r, "count");
+		CHECK(count == 250);
+		for (const char* c : {"box_width_mm", "window_start_step", "window_steps", "bodies", "touching_contacts_per_particle",
+		                      "contact_pairs_per_particle", "step_ms", "step_mean_ms", "collide_ms", "solve_ms", "broadphase_ms",
+		                      "collide_median_ms", "solve_median_ms", "solve_toi_ms", "us_per_particle_step", "step_vs_polygon8",
+		                      "collide_vs_polygon8", "solve_vs_polygon8", "growth_vs_smallest", "run_s"})
+		{
+			CAPTURE(c);
+			const double v = Number(r, c);
+			CHECK(std::isfinite(v));
+			CHECK(v > 0.0);
+		}
+		CHECK(Number(r, "window_steps") == 30);
+		// The particles: none lost or made up, none non-finite, none outside the container.
+		CHECK(Number(r, "particles_end") == count);
+		CHECK(Number(r, "nonfinite") == 0);
+		CHECK(Number(r, "escaped") == 0);
+		CHECK(Number(r, "bodies") <= count);
+		CHECK(Number(r, "bodies") + Number(r, "discharged") >= count - 1e-9);
+		// Particles in a pile touch about two others (Box2D counts each contact once).
+		CHECK(Number(r, "touching_contacts_per_particle") > 0.5);
+		CHECK(Number(r, "touching_contacts_per_particle") < 4.0);
+		CHECK(Number(r, "growth_vs_smallest") == 1.0); // the only count is the smallest
+		// The phases measured inside Box2D's step fit in its mean step time (timer rounding aside).
+		const double phases = Number(r, "collide_ms") + Number(r, "solve_ms") + Number(r, "solve_toi_ms");
+		CHECK(phases <= 1.01 * Number(r, "step_mean_ms") + 1e-3);
+		CHECK(Number(r, "broadphase_ms") <= Number(r, "solve_ms") * 1.001);
+		if (r.at("variant") == "polygon8")
+		{
+			CHECK(Number(r, "step_vs_polygon8") == 1.0);
+			polygonStep[r.at("scene")] = Number(r, "step_ms");
+			polygonCollide[r.at("scene")] = Number(r, "collide_ms");
+		}
+	}
+	// Ratios: the analytic time over the polygon time of the same scene (4 significant digits).
+	for (size_t i = 0; i < rows.size(); i += 2)
+	{
+		const Row& r = rows[i];
+		const std::string scene = r.at("scene");
+		CHECK(Number(r, "step_vs_polygon8") == doctest::Approx(Number(r, "step_ms") / polygonStep[scene]).epsilon(2e-3));
+		CHECK(Number(r, "collide_vs_polygon8") == doctest::Approx(Number(r, "collide_ms") / polygonCollide[scene]).epsilon(2e-3));
+	}
+	// Both variants of a scene run the same steps of the same container.
+	CHECK(rows[0].at("window_start_step") == rows[1].at("window_start_step"));
+	CHECK(rows[2].at("window_start_step") == rows[3].at("window_start_step"));
+	CHECK(Number(rows[2], "outlet_mm") > 0.0); // the hopper has an outlet, the packing box none
+	CHECK(Number(rows[0], "outlet_mm") == 0.0);
+
+	std::ifstream f(out + "/summary.json");
+	REQUIRE(f.good());
+	const nlohmann::json s = nlohmann::json::parse(f);
+	CHECK(s["particles_intact"] == true);
+	for (const auto& run : s["runs"])
+		CHECK(run["fixtures_ok"] == true); // analytic runs analytic fixtures, polygon runs plain 8-gons
+	// The 8-gons: vertices on the shapes' surfaces, and the areas of the inscribed polygons.
+	// Ellipse: the affine image of the regular octagon, 2√2 ab, over π ab. Superellipse n = 4:
+	// vertices (±a, 0), (0, ±b), (±c a, ±c b) with c = 2^(-1/4), area 4 c ab, over the
+	// superellipse's 4 ab Γ(1 + 1/4)² / Γ(1 + 1/2).
+	const double ellipseRatio = 2.0 * std::sqrt(2.0) / M_PI;
+	const double superRatio = std::pow(2.0, -0.25) * std::tgamma(1.5) / (std::tgamma(1.25) * std::tgamma(1.25));
+	CHECK(s["polygon_check"]["hopper"]["max_vertex_radial_error"].get<double>() < 1e-6);
+	CHECK(s["polygon_check"]["packing"]["max_vertex_radial_error"].get<double>() < 1e-6);
+	CHECK(s["polygon_check"]["hopper"]["mean_area_over_analytic"].get<double>() == doctest::Approx(ellipseRatio).epsilon(1e-6));
+	CHECK(s["polygon_check"]["packing"]["mean_area_over_analytic"].get<double>() == doctest::Approx(superRatio).epsilon(1e-6));
+	CHECK(s["machine"]["cpu"].is_string());
+
+	std::ifstream md(out + "/scenes.md");
+	std::stringstream text;
+	text << md.rdbuf();
+	CHECK(text.str().find("Machine: ") != std::string::npos);
+	CHECK(text.str().find("Build: ") != std::string::npos);
+	CHECK(text.str().find("| hopper | 250 | analytic |") != std::string::npos);
+}
+
+TEST_CASE("b2a_bench_scenes rejects bad options with exit status 2")
+{
+	CHECK(ExitStatus("--counts 12.5 --out demo_out/bench_scenes_bad") == 2);
+	CHECK(ExitStatus("--scenes packing,bogus --out demo_out/bench_scenes_bad") == 2);
+	CHECK(ExitStatus("--steps 0 --out demo_out/bench_scenes_bad") == 2);
+	CHECK(ExitStatus("--help") == 0);
+}
+
+#endif
