@@ -631,7 +631,8 @@ int main(int argc, char** argv)
 	WriteText(opt.out + "/pairs.md", text);
 
 	const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
-	                         "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aa4499", "#44aa99", "#882255"};
+	                         "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aa4499", "#44aa99", "#882255",
+	                         "#ddcc77", "#332288"}; // one colour per method (at most 16 rows per family)
 	for (const Family& f : families)
 	{
 		std::vector<Series> series;
