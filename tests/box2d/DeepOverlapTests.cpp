@@ -18,7 +18,7 @@
 // A wrong contact normal in deep overlap (pointing the wrong way, or flipping between steps)
 // breaks the last promise (they stay overlapped or pass through each other) and, under
 // gravity, the speed bound (a pile "explodes").
-#include "SceneSupport.h"
+#include "ReliabilitySupport.h"
 
 #include <doctest/doctest.h>
 
@@ -35,25 +35,6 @@ constexpr float kDt = 1.0f / 60.0f;
 constexpr int kVelocityIterations = 8, kPositionIterations = 3;
 constexpr double kFloatTolerance = 2e-4; // float positions of bodies a few units from the origin
 
-// Distance from a particle's origin to its surface along the world direction u (the shapes are
-// star-shaped about their origins): bisection on the level function, independent of the contact.
-double Radial(const Shape& s, double angle, Vec2 u)
-{
-	const Vec2 d = InvRotate(Rot(angle), u);
-	double inside = 0.0, outside = 1.01 * s.BoundingRadius();
-	for (int k = 0; k < 60; ++k)
-	{
-		const double mid = 0.5 * (inside + outside);
-		(s.Level(mid * d) <= s.SurfaceLevel() ? inside : outside) = mid;
-	}
-	return inside;
-}
-
-Pose PoseOf(const b2Body* b)
-{
-	return Pose(Vec2(b->GetPosition().x, b->GetPosition().y), double(b->GetAngle()));
-}
-
 // Manifold points of the touching contacts of a body.
 int ManifoldPoints(b2Body* b)
 {
@@ -62,12 +43,6 @@ int ManifoldPoints(b2Body* b)
 		if (e->contact->IsTouching())
 			n += e->contact->GetManifold()->pointCount;
 	return n;
-}
-
-bool Finite(const b2Body* b)
-{
-	return std::isfinite(b->GetPosition().x) && std::isfinite(b->GetPosition().y) && std::isfinite(b->GetAngle()) &&
-	       std::isfinite(b->GetLinearVelocity().x) && std::isfinite(b->GetLinearVelocity().y) && std::isfinite(b->GetAngularVelocity());
 }
 
 // Steps a world and records, for every dynamic body and step, the push-out (the centre's motion

@@ -44,6 +44,62 @@ std::vector<Vec2> ConvexHull(std::vector<Vec2> p)
 	return h;
 }
 
+// The vertices of the rounded polygon (core `poly`, counter-clockwise, plus a disk of radius
+// `skin`) whose boundary leaves the shape: points along each edge moved out by the skin and on
+// each corner's arc, tested against the level function; and the ends of the edge nearest to any
+// surface sample that lies within the rounded polygon (a cusp between the edge points).
+std::vector<int> VerticesOutside(const Shape& shape, const std::vector<Vec2>& poly, double skin)
+{
+	const int n = int(poly.size());
+	std::vector<int> out;
+	skin *= 1.0 - 1e-6; // a smooth convex surface touches the skin's disk: no rounding either way
+	auto outside = [&](Vec2 x) { return !(shape.Level(x) <= shape.SurfaceLevel()); };
+	auto normal = [&](int i) {
+		const Vec2 e = poly[(i + 1) % n] - poly[i];
+		return Normalize(Vec2(e.y, -e.x));
+	};
+	for (int i = 0; i < n; ++i)
+	{
+		const int j = (i + 1) % n;
+		const Vec2 m = normal(i), next = normal(j);
+		bool edge = false, corner = false;
+		for (int k = 0; k <= 16 && !edge; ++k)
+			edge = outside(poly[i] + (k / 16.0) * (poly[j] - poly[i]) + skin * m);
+		for (int k = 1; k < 8 && !corner && skin > 0.0; ++k)
+			corner = outside(poly[j] + skin * Normalize((1.0 - k / 8.0) * m + (k / 8.0) * next));
+		if (edge)
+			out.push_back(i);
+		if (edge || corner)
+			out.push_back(j);
+	}
+	for (Vec2 p : shape.Samples()->point)
+	{
+		double nearest = 1e300;
+		int edge = 0;
+		bool inCore = true;
+		for (int i = 0; i < n; ++i)
+		{
+			const Vec2 a = poly[i], e = poly[(i + 1) % n] - a;
+			const double t = std::clamp(Dot(p - a, e) / Dot(e, e), 0.0, 1.0);
+			const double d = Length(p - (a + t * e));
+			if (d < nearest)
+			{
+				nearest = d;
+				edge = i;
+			}
+			inCore = inCore && Cross(e, p - a) > 0.0;
+		}
+		if (inCore || nearest < skin)
+		{
+			out.push_back(edge);
+			out.push_back((edge + 1) % n);
+		}
+	}
+	std::sort(out.begin(), out.end());
+	out.erase(std::unique(out.begin(), out.end()), out.end());
+	return out;
+}
+
 const AnalyticProxyShape* Proxy(const b2Fixture* fixture)
 {
 	return fixture ? AnalyticProxyShape::From(fixture->GetShape()) : nullptr;
@@ -101,16 +157,20 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 	// The proxy: Box2D's time of impact stops bodies when proxy cores come within
 	// totalRadius − 3·slop and expects its position solver to leave them at totalRadius − slop,
 	// so the proxy needs a skin like Box2D's polygons (b2_polygonRadius). Its core is the polygon
-	// through surface points moved inwards by that skin along their normals: the rounded proxy
-	// then lies inside the true shape (for convex shapes), never reaching a wall before it.
+	// through surface points moved inwards by that skin along their normals, or towards the
+	// origin (shapes are star-shaped about it) where the normal is no use: at a cusp such as the
+	// heart's, the gradient points anywhere.
 	const double skin = b2_polygonRadius;
 	const auto samples = shape.Samples(AnalyticProxyShape::kMaxProxyVertices);
 	std::vector<Vec2> points;
 	bool insetFits = true;
+	auto inside = [&](Vec2 q, Vec2 p) { return shape.Level(q) < shape.SurfaceLevel() && Dot(q, p) > 0.0; };
 	for (Vec2 p : samples->point)
 	{
-		const Vec2 q = p - skin * Normalize(shape.Gradient(p));
-		insetFits = insetFits && shape.Level(q) < shape.SurfaceLevel() && Dot(q, p) > 0.0;
+		Vec2 q = p - skin * Normalize(shape.Gradient(p));
+		if (!inside(q, p))
+			q = p - skin * Normalize(p);
+		insetFits = insetFits && inside(q, p);
 		points.push_back(q);
 	}
 	if (!insetFits)
@@ -120,10 +180,25 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 		for (Vec2 p : samples->point)
 			points.push_back(p);
 	}
-	for (Vec2& p : points)
-		p = ToWorld(local, p);
 	if (!shape.IsConvex())
 		points = ConvexHull(points);
+	// The rounded proxy must lie inside the true shape: Box2D drops a time of impact whose
+	// contact is not touching when it gets there (b2World::SolveTOI), so a proxy reaching past
+	// the true shape lets fast particles pass. Convex shapes fit as built; a hull bridges concave
+	// parts (the heart's notch), so pull the vertices of edges that leave the shape towards the
+	// origin until it fits.
+	const double radius = insetFits ? skin : 0.0;
+	for (int iteration = 0; iteration < 200; ++iteration)
+	{
+		const std::vector<int> outside = VerticesOutside(shape, points, radius);
+		if (outside.empty())
+			break;
+		for (int i : outside)
+			points[i] = 0.99 * points[i];
+		points = ConvexHull(points);
+	}
+	for (Vec2& p : points)
+		p = ToWorld(local, p);
 	auto* data = new AnalyticFixtureData;
 	data->shape = analytic.shape;
 	data->local = local;
@@ -131,7 +206,7 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 	data->patchMinWidth = analytic.patchMinWidth * shape.BoundingRadius();
 	data->solver = analytic.solver;
 	AnalyticProxyShape proxy(data); // owns the first reference; the fixture's clone adds its own
-	proxy.m_radius = insetFits ? float(skin) : 0.0f;
+	proxy.m_radius = float(radius);
 	const int count = std::min(int(points.size()), AnalyticProxyShape::kMaxProxyVertices);
 	proxy.m_count = count;
 	for (int i = 0; i < count; ++i)
