@@ -6,11 +6,18 @@
 //    tight AABB (the broad phase works on it), ComputeMass the analytic area, centroid and
 //    inertia (so the body's mass data is exact), TestPoint and RayCast the exact answers (so
 //    b2World::RayCast, QueryAABB + TestPoint and b2Fixture::RayCast work unchanged).
-//  - Its polygon vertices are a convex polygon inscribed in the true shape (up to 7 points on
-//    the surface). Box2D uses them only for continuous collision (b2TimeOfImpact) and sensors
-//    (b2TestOverlap). An inscribed proxy never reaches the time of impact before the true shape
-//    does, so when Box2D's TOI solver stops a fast particle, the true shapes already touch and
-//    the contact below pushes them apart: particles do not tunnel through thin static walls.
+//  - Its polygon vertices are a convex polygon inscribed in the true shape (up to 7 surface
+//    points moved inwards by Box2D's polygon skin; for concave shapes such as the heart, their
+//    hull with the vertices pulled in until the rounded polygon lies inside). Box2D uses them
+//    only for continuous collision (b2TimeOfImpact) and sensors (b2TestOverlap). An inscribed
+//    proxy never reaches the time of impact before the true shape does, so when Box2D's TOI
+//    solver stops a fast particle, the true shapes already touch and the contact below pushes
+//    them apart: particles do not tunnel through thin static walls, nor through bullets. (With
+//    a proxy reaching outside, Box2D would drop the time of impact: it discards one whose
+//    contact is not touching.) The true shape may be inside a wall by up to its proxy's gap
+//    when stopped. Between two non-bullet dynamic bodies Box2D has no continuous collision:
+//    they do not pass through each other while their relative motion in one step stays below
+//    half the sum of their inscribed radii about their centres (tests/box2d/TunnellingTests.cpp).
 //    Sensors, however, report overlap of the inscribed polygons, slightly less than the truth.
 //  - The narrow phase is replaced by registering our own b2Contact subclass with Box2D's contact
 //    registers (b2Contact::AddType) for (polygon, polygon), (polygon, circle), (edge, polygon)
