@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <vector>
 
 namespace b2a
 {
@@ -33,16 +34,33 @@ ContactResult OverlapAxisContact(const Shape& a, const Pose& pa, const Shape& b,
 		return Dot(WorldSupport(a, pa, n) - WorldSupport(b, pb, -n), n);
 	};
 	const int count = 64;
-	int best = 0;
-	double bestDepth = std::numeric_limits<double>::infinity();
+	const double step = 2.0 * kPi / count;
+	double value[count];
+	int lowest = 0;
 	for (int k = 0; k < count; ++k)
 	{
-		const double d = depth(2.0 * kPi * k / count);
-		if (d < bestDepth) { bestDepth = d; best = k; }
+		value[k] = depth(step * k);
+		if (value[k] < value[lowest]) lowest = k;
 	}
-	const double step = 2.0 * kPi / count;
-	const ScalarResult m = MinimizeBrent(depth, step * (best - 1), step * (best + 1), 1e-12, 1e-14, 200);
-	const double t = m.fx < bestDepth ? m.x : step * best;
+	// The depth has a local minimum at each particle's narrow axes, sharp ones for blocky
+	// superellipses, so the lowest sample can lie by the wrong one (a large square and a small
+	// needle: the square's other axis, across the needle, is the least overlap). Refine the four
+	// lowest local minima of the samples and keep the least depth.
+	std::vector<int> minima;
+	for (int k = 0; k < count; ++k)
+		if (value[k] <= value[(k + count - 1) % count] && value[k] < value[(k + 1) % count])
+			minima.push_back(k);
+	if (minima.empty())
+		minima.push_back(lowest); // constant depth (two circles)
+	std::sort(minima.begin(), minima.end(), [&](int i, int j) { return value[i] < value[j]; });
+	if (minima.size() > 4)
+		minima.resize(4);
+	double t = step * minima[0], bestDepth = value[minima[0]];
+	for (int k : minima)
+	{
+		const ScalarResult m = MinimizeBrent(depth, step * (k - 1), step * (k + 1), 1e-12, 1e-14, 200);
+		if (m.fx < bestDepth) { bestDepth = m.fx; t = m.x; }
+	}
 	ContactResult c;
 	c.status = SolveStatus::converged;
 	c.method = SolveMethod::overlapAxis;
