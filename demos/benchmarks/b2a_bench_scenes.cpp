@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include <time.h>
+
 using namespace b2a;
 using namespace b2a::bench;
 using namespace b2a::demo;
@@ -41,8 +43,10 @@ analytic fixtures, and with plain Box2D b2PolygonShapes of 8 vertices on the sam
 skin b2_polygonRadius). Both run the same steps; the window's steps are timed with
 b2World::GetProfile() (milliseconds): step is the median over the window, collide, solve
 (broadphase is part of it) and solveTOI are means (collide and solve also as medians in the
-CSV). The cost per particle-step is the median step time over the mean number of particles
-in the box; growth is that cost at a count over the cost at the smallest count. After each
+CSV). Box2D's profile is wall-clock time, which on a shared machine counts other processes'
+time too; so each step's CPU time of this thread is taken as well (its median: step_cpu_ms).
+The cost per particle-step is the median step time over the mean number of particles in the
+box; growth is that cost at a count over the cost at the smallest count. After each
 run every particle is checked: none lost (in the box plus discharged = N), none non-finite,
 none outside the container.
 
@@ -72,6 +76,7 @@ struct Run
 
 	double stepMedian = 0.0, stepMean = 0.0, collide = 0.0, solve = 0.0, broadphase = 0.0, solveTOI = 0.0; // ms
 	double collideMedian = 0.0, solveMedian = 0.0; // ms, robust against a busy machine's interruptions
+	double cpuMedian = 0.0; // ms of this thread's CPU time per step (median): blind to other processes' load
 	double bodies = 0.0;   // mean particles in the box over the window
 	double touching = 0.0; // mean touching contacts per particle over the window
 	double pairs = 0.0;    // mean Box2D contacts (fat AABBs overlapping: each evaluated every step) per particle
@@ -80,6 +85,7 @@ struct Run
 	double runSeconds = 0.0;
 
 	double MicrosecondsPerParticleStep() const { return 1000.0 * stepMedian / bodies; }
+	double CpuMicrosecondsPerParticleStep() const { return 1000.0 * cpuMedian / bodies; }
 	bool Intact() const { return particlesEnd == count && nonFinite == 0 && escaped == 0 && fixturesOk; }
 };
 
@@ -126,6 +132,15 @@ void Schedule(Run& run, double top, int windowSteps)
 	else
 		run.windowStart = fall;
 	run.windowSteps = windowSteps;
+}
+
+// CPU time of this thread (ms). Box2D's profile is wall-clock time, which on a shared machine
+// also counts the time other processes held the core.
+double ThreadCpuMilliseconds()
+{
+	timespec t{};
+	clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+	return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
 }
 
 int TouchingContacts(b2World& world)
@@ -188,7 +203,7 @@ void Simulate(Run& run, bool picture, const std::string& out, Progress& progress
 	const auto start = std::chrono::steady_clock::now();
 	GranularScene scene(run.config);
 	b2World& world = scene.World();
-	std::vector<double> steps, collides, solves;
+	std::vector<double> steps, collides, solves, cpu;
 	double sumStep = 0.0, sumCollide = 0.0, sumSolve = 0.0, sumBroadphase = 0.0, sumTOI = 0.0, sumBodies = 0.0, sumTouching = 0.0,
 	       sumPairs = 0.0;
 	const int total = run.windowStart + run.windowSteps;
@@ -196,10 +211,13 @@ void Simulate(Run& run, bool picture, const std::string& out, Progress& progress
 	{
 		if (s == run.openAt)
 			scene.OpenOutlet();
+		const double cpuBefore = ThreadCpuMilliseconds();
 		scene.Step();
+		const double cpuStep = ThreadCpuMilliseconds() - cpuBefore;
 		if (s >= run.windowStart)
 		{
 			const b2Profile& p = world.GetProfile();
+			cpu.push_back(cpuStep);
 			steps.push_back(p.step);
 			collides.push_back(p.collide);
 			solves.push_back(p.solve);
@@ -221,6 +239,7 @@ void Simulate(Run& run, bool picture, const std::string& out, Progress& progress
 	run.stepMedian = Median(steps);
 	run.collideMedian = Median(collides);
 	run.solveMedian = Median(solves);
+	run.cpuMedian = Median(cpu);
 	run.stepMean = sumStep / n;
 	run.collide = sumCollide / n;
 	run.solve = sumSolve / n;
@@ -324,6 +343,7 @@ struct Pair
 	double StepRatio() const { return analytic->stepMedian / polygon->stepMedian; }
 	double CollideRatio() const { return analytic->collide / polygon->collide; }
 	double SolveRatio() const { return analytic->solve / polygon->solve; }
+	double CpuRatio() const { return analytic->cpuMedian / polygon->cpuMedian; }
 };
 
 Pair FindPair(const std::vector<Run>& runs, const std::string& scene, int count)
@@ -335,12 +355,12 @@ Pair FindPair(const std::vector<Run>& runs, const std::string& scene, int count)
 	return p;
 }
 
-/// Cost per particle-step over the same scene and variant at the smallest count.
-double Growth(const std::vector<Run>& runs, const Run& run)
+/// Cost per particle-step (wall-clock or CPU) over the same scene and variant at the smallest count.
+double Growth(const std::vector<Run>& runs, const Run& run, double (Run::*cost)() const = &Run::MicrosecondsPerParticleStep)
 {
 	for (const Run& r : runs) // runs are in increasing count: the first match is the smallest
 		if (r.scene == run.scene && r.variant == run.variant)
-			return run.MicrosecondsPerParticleStep() / r.MicrosecondsPerParticleStep();
+			return (run.*cost)() / (r.*cost)();
 	return 0.0;
 }
 } // namespace
@@ -393,30 +413,32 @@ int main(int argc, char** argv)
 	csv.columns = {"scene", "particle", "count", "variant", "box_width_mm", "outlet_mm", "window_start_step", "window_steps",
 	               "bodies", "touching_contacts_per_particle", "contact_pairs_per_particle", "step_ms", "step_mean_ms",
 	               "collide_ms", "solve_ms", "broadphase_ms", "collide_median_ms", "solve_median_ms", "solve_toi_ms",
-	               "us_per_particle_step", "step_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8",
-	               "growth_vs_smallest", "particles_end", "discharged", "nonfinite", "escaped", "run_s"};
+	               "step_cpu_ms", "us_per_particle_step", "step_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8",
+	               "cpu_vs_polygon8", "growth_vs_smallest", "growth_cpu_vs_smallest", "particles_end", "discharged", "nonfinite", "escaped", "run_s"};
 	Table md;
-	md.columns = {"scene", "N", "variant", "step ms", "collide ms", "solve ms (broadphase)", "TOI ms", "µs/particle-step",
-	              "step × 8-gon", "collide × 8-gon", "growth", "contacts/particle"};
+	md.columns = {"scene", "N", "variant", "step ms", "collide ms", "solve ms (broadphase)", "TOI ms", "CPU ms",
+	              "µs/particle-step", "step × 8-gon", "collide × 8-gon", "CPU × 8-gon", "growth (CPU)", "contacts/particle"};
 	Json runList = Json::array();
 	bool intact = true;
 	for (const Run& r : runs)
 	{
 		const Pair p = FindPair(runs, r.scene, r.count);
-		const double growth = Growth(runs, r);
+		const double growth = Growth(runs, r), growthCpu = Growth(runs, r, &Run::CpuMicrosecondsPerParticleStep);
 		intact = intact && r.Intact();
 		csv.rows.push_back({r.scene, r.particle, std::to_string(r.count), r.variant, F(r.config.boxWidth), F(r.config.outletWidth),
 		                    std::to_string(r.windowStart), std::to_string(r.windowSteps), F(r.bodies), F(r.touching), F(r.pairs),
 		                    F(r.stepMedian), F(r.stepMean), F(r.collide), F(r.solve), F(r.broadphase), F(r.collideMedian),
-		                    F(r.solveMedian), F(r.solveTOI),
+		                    F(r.solveMedian), F(r.solveTOI), F(r.cpuMedian),
 		                    F(r.MicrosecondsPerParticleStep()), F(r.stepMedian / p.polygon->stepMedian),
-		                    F(r.collide / p.polygon->collide), F(r.solve / p.polygon->solve), F(growth),
+		                    F(r.collide / p.polygon->collide), F(r.solve / p.polygon->solve),
+		                    F(r.cpuMedian / p.polygon->cpuMedian), F(growth), F(growthCpu),
 		                    std::to_string(r.particlesEnd), std::to_string(r.discharged), std::to_string(r.nonFinite),
 		                    std::to_string(r.escaped), F(r.runSeconds, 3)});
 		md.rows.push_back({r.scene, std::to_string(r.count), r.variant, F(r.stepMedian, 3), F(r.collide, 3),
-		                   F(r.solve, 3) + " (" + F(r.broadphase, 2) + ")", F(r.solveTOI, 2), F(r.MicrosecondsPerParticleStep(), 3),
-		                   F(r.stepMedian / p.polygon->stepMedian, 3), F(r.collide / p.polygon->collide, 3), F(growth, 3),
-		                   F(r.touching, 3)});
+		                   F(r.solve, 3) + " (" + F(r.broadphase, 2) + ")", F(r.solveTOI, 2), F(r.cpuMedian, 3),
+		                   F(r.MicrosecondsPerParticleStep(), 3), F(r.stepMedian / p.polygon->stepMedian, 3),
+		                   F(r.collide / p.polygon->collide, 3), F(r.cpuMedian / p.polygon->cpuMedian, 3),
+		                   F(growth, 3) + " (" + F(growthCpu, 3) + ")", F(r.touching, 3)});
 		runList.push_back({{"scene", r.scene}, {"particle", r.particle}, {"count", r.count}, {"variant", r.variant},
 		                   {"box_width_mm", r.config.boxWidth}, {"outlet_mm", r.config.outletWidth},
 		                   {"outlet_opens_at_step", r.openAt}, {"window_start_step", r.windowStart},
@@ -425,8 +447,9 @@ int main(int argc, char** argv)
 		                   {"contact_pairs_per_particle", r.pairs}, {"step_ms", r.stepMedian},
 		                   {"step_mean_ms", r.stepMean}, {"collide_ms", r.collide}, {"solve_ms", r.solve},
 		                   {"broadphase_ms", r.broadphase}, {"collide_median_ms", r.collideMedian},
-		                   {"solve_median_ms", r.solveMedian}, {"solve_toi_ms", r.solveTOI},
+		                   {"solve_median_ms", r.solveMedian}, {"solve_toi_ms", r.solveTOI}, {"step_cpu_ms", r.cpuMedian},
 		                   {"us_per_particle_step", r.MicrosecondsPerParticleStep()}, {"growth_vs_smallest", growth},
+		                   {"growth_cpu_vs_smallest", growthCpu},
 		                   {"particles_end", r.particlesEnd}, {"discharged", r.discharged}, {"nonfinite", r.nonFinite},
 		                   {"escaped", r.escaped}, {"fixtures_ok", r.fixturesOk}, {"intact", r.Intact()}, {"run_s", r.runSeconds}});
 	}
@@ -440,7 +463,7 @@ int main(int argc, char** argv)
 		{
 			const Pair p = FindPair(runs, name, count);
 			ratios.push_back({{"scene", name}, {"count", count}, {"step", p.StepRatio()}, {"collide", p.CollideRatio()},
-			                  {"solve", p.SolveRatio()}});
+			                  {"solve", p.SolveRatio()}, {"step_cpu", p.CpuRatio()}});
 		}
 	Json target = nullptr;
 	int targetCount = counts.front();
@@ -455,6 +478,7 @@ int main(int argc, char** argv)
 		          {"step_target", kTargetStepRatio},
 		          {"collide_ratio", p.CollideRatio()},
 		          {"collide_target", kTargetCollideRatio},
+		          {"step_cpu_ratio", p.CpuRatio()},
 		          {"meets", p.StepRatio() <= kTargetStepRatio && p.CollideRatio() <= kTargetCollideRatio}};
 	}
 
@@ -468,8 +492,10 @@ int main(int argc, char** argv)
 	        "broadphase). packing: superellipses n = 4 settling in a closed box 2√N mm wide; hopper: 2 × 0.66 mm "
 	        "ellipses discharging through an outlet of 0.3 of a box 80√(N/4000) mm wide. `8-gon` rows are the same "
 	        "scenes with plain Box2D polygons of 8 vertices on the same surfaces. `× 8-gon`: the analytic time over "
-	        "the 8-gons'. growth: µs per particle-step over that at the smallest count. contacts/particle: touching "
-	        "Box2D contacts (walls included) per particle.\n\n";
+	        "the 8-gons'. CPU ms: the median CPU time of the stepping thread (the profile is wall-clock time, which on "
+	        "a shared machine includes other processes' turns). growth: µs per particle-step over that at the smallest "
+	        "count (in brackets: from CPU time). contacts/particle: touching Box2D contacts (walls included) per "
+	        "particle.\n\n";
 	text += md.Markdown();
 	if (!target.is_null())
 		text += "\nHopper of " + std::to_string(targetCount) + " ellipses against the target (step ≤ " + F(kTargetStepRatio, 2) +
@@ -500,9 +526,9 @@ int main(int argc, char** argv)
 		const Pair largest = FindPair(runs, name, counts.back());
 		char part[320];
 		std::snprintf(part, sizeof part,
-		              "; %s %d: %.3g vs %.3g ms/step (%.2fx, collide %.2fx), cost per particle-step at %d: %.2fx", name.c_str(),
-		              targetCount, p.analytic->stepMedian, p.polygon->stepMedian, p.StepRatio(), p.CollideRatio(), counts.back(),
-		              Growth(runs, *largest.analytic));
+		              "; %s %d: %.3g vs %.3g ms/step (%.2fx, collide %.2fx, CPU %.2fx), cost per particle-step at %d: %.2fx",
+		              name.c_str(), targetCount, p.analytic->stepMedian, p.polygon->stepMedian, p.StepRatio(), p.CollideRatio(),
+		              p.CpuRatio(), counts.back(), Growth(runs, *largest.analytic));
 		line += part;
 	}
 	std::printf("b2a_bench_scenes: %zu runs in %.0f s, analytic vs polygon8%s; particles %s -> %s/scenes.md\n", runs.size(),

@@ -84,16 +84,16 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants an
 	const std::vector<std::string> columns = {
 		"scene", "particle", "count", "variant", "box_width_mm", "outlet_mm", "window_start_step", "window_steps", "bodies",
 		"touching_contacts_per_particle", "contact_pairs_per_particle", "step_ms", "step_mean_ms", "collide_ms", "solve_ms",
-		"broadphase_ms", "collide_median_ms", "solve_median_ms", "solve_toi_ms", "us_per_particle_step", "step_vs_polygon8",
-		"collide_vs_polygon8", "solve_vs_polygon8", "growth_vs_smallest", "particles_end", "discharged", "nonfinite", "escaped",
-		"run_s"};
+		"broadphase_ms", "collide_median_ms", "solve_median_ms", "solve_toi_ms", "step_cpu_ms", "us_per_particle_step",
+		"step_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8", "cpu_vs_polygon8", "growth_vs_smallest",
+		"growth_cpu_vs_smallest", "particles_end", "discharged", "nonfinite", "escaped", "run_s"};
 	CHECK(header == columns);
 
 	// Quick: the smallest count only, each scene once per variant, in that order.
 	REQUIRE(rows.size() == 4);
 	const char* scenes[] = {"packing", "packing", "hopper", "hopper"};
 	const char* variants[] = {"analytic", "polygon8", "analytic", "polygon8"};
-	std::map<std::string, double> polygonStep, polygonCollide;
+	std::map<std::string, double> polygonStep, polygonCollide, polygonCpu;
 	for (size_t i = 0; i < rows.size(); ++i)
 	{
 		const Row& r = rows[i];
@@ -104,8 +104,9 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants an
 		CHECK(count == 250);
 		for (const char* c : {"box_width_mm", "window_start_step", "window_steps", "bodies", "touching_contacts_per_particle",
 		                      "contact_pairs_per_particle", "step_ms", "step_mean_ms", "collide_ms", "solve_ms", "broadphase_ms",
-		                      "collide_median_ms", "solve_median_ms", "solve_toi_ms", "us_per_particle_step", "step_vs_polygon8",
-		                      "collide_vs_polygon8", "solve_vs_polygon8", "growth_vs_smallest", "run_s"})
+		                      "collide_median_ms", "solve_median_ms", "solve_toi_ms", "step_cpu_ms", "us_per_particle_step",
+		                      "step_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8", "cpu_vs_polygon8",
+		                      "growth_vs_smallest", "growth_cpu_vs_smallest", "run_s"})
 		{
 			CAPTURE(c);
 			const double v = Number(r, c);
@@ -123,6 +124,7 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants an
 		CHECK(Number(r, "touching_contacts_per_particle") > 0.5);
 		CHECK(Number(r, "touching_contacts_per_particle") < 4.0);
 		CHECK(Number(r, "growth_vs_smallest") == 1.0); // the only count is the smallest
+		CHECK(Number(r, "growth_cpu_vs_smallest") == 1.0);
 		// The phases measured inside Box2D's step fit in its mean step time (timer rounding aside).
 		const double phases = Number(r, "collide_ms") + Number(r, "solve_ms") + Number(r, "solve_toi_ms");
 		CHECK(phases <= 1.01 * Number(r, "step_mean_ms") + 1e-3);
@@ -130,7 +132,9 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants an
 		if (r.at("variant") == "polygon8")
 		{
 			CHECK(Number(r, "step_vs_polygon8") == 1.0);
+			CHECK(Number(r, "cpu_vs_polygon8") == 1.0);
 			polygonStep[r.at("scene")] = Number(r, "step_ms");
+			polygonCpu[r.at("scene")] = Number(r, "step_cpu_ms");
 			polygonCollide[r.at("scene")] = Number(r, "collide_ms");
 		}
 	}
@@ -141,6 +145,7 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants an
 		const std::string scene = r.at("scene");
 		CHECK(Number(r, "step_vs_polygon8") == doctest::Approx(Number(r, "step_ms") / polygonStep[scene]).epsilon(2e-3));
 		CHECK(Number(r, "collide_vs_polygon8") == doctest::Approx(Number(r, "collide_ms") / polygonCollide[scene]).epsilon(2e-3));
+		CHECK(Number(r, "cpu_vs_polygon8") == doctest::Approx(Number(r, "step_cpu_ms") / polygonCpu[scene]).epsilon(2e-3));
 	}
 	// Both variants of a scene run the same steps of the same container.
 	CHECK(rows[0].at("window_start_step") == rows[1].at("window_start_step"));
