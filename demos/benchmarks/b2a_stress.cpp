@@ -876,6 +876,7 @@ int main(int argc, char** argv)
 	const auto fullEvery = std::uint64_t(o.Number("--full-every", 500, 1, 1e9));
 	const int poolSize = int(o.Number("--pool", o.quick ? 512 : 16384, 16, 1e6));
 	demo::Progress progress("b2a_stress");
+	const double cpuStart = bench::ThreadCpuNanoseconds();
 	ShapePool pool(o.seed, poolSize, poolSize / 16);
 	// The dense subset: a fixed pseudo-random choice (every K-th index would always fall in the
 	// same category, whose slots repeat every 100).
@@ -919,6 +920,7 @@ int main(int argc, char** argv)
 		}
 	}
 	const double runSeconds = progress.Elapsed();
+	const double runCpuSeconds = 1e-9 * (bench::ThreadCpuNanoseconds() - cpuStart);
 
 	// The worst cases again, in full, with the dense references.
 	Json worstList = Json::array();
@@ -988,17 +990,19 @@ int main(int argc, char** argv)
 	j["worst_cases"] = worst.ToJson();
 	j["machine"] = bench::MachineJson(bench::GetMachineInfo());
 	j["seconds"] = runSeconds;
+	j["cpu_seconds"] = runCpuSeconds;
 	j["seconds_with_worst_cases"] = progress.Elapsed();
+	j["cpu_seconds_with_worst_cases"] = 1e-9 * (bench::ThreadCpuNanoseconds() - cpuStart);
 	demo::WriteJson(o.out + "/summary.json", j);
 	demo::WriteJson(o.out + "/worst_cases.json", worstList);
 	for (int c = 0; c < int(Category::count); ++c)
 		demo::WriteText(o.out + "/" + CategoryName(Category(c)) + ".csv", categories[c].Csv());
 
-	std::printf("b2a_stress: %" PRIu64 " configurations in %.1f s: %" PRIu64 " converged, %" PRIu64 " after fallback, %" PRIu64
+	std::printf("b2a_stress: %" PRIu64 " configurations in %.1f s (CPU %.1f s): %" PRIu64 " converged, %" PRIu64 " after fallback, %" PRIu64
 	            " failed (%" PRIu64 " beyond level 1e-12), %" PRIu64 " non-finite; Newton alone failed %" PRIu64
 	            "; max point error %.3g (well-conditioned %.3g), level %.3g, normal %.3g rad; inaccurate %" PRIu64
 	            ", touching mismatches %" PRIu64 " -> %s\n",
-	            count, runSeconds, contact.converged, contact.fallback, contact.failed, failedBeyondRange, nonFinite,
+	            count, runSeconds, runCpuSeconds, contact.converged, contact.fallback, contact.failed, failedBeyondRange, nonFinite,
 	            total[int(Kind::newton)].failed, point.value, pointWell.value, level.value, normal.value, inaccurate,
 	            touchingWrong, o.out.c_str());
 	return nonFinite == 0 && failedInRange == 0 ? 0 : 1;
