@@ -414,7 +414,8 @@ int main(int argc, char** argv)
 	               "bodies", "touching_contacts_per_particle", "contact_pairs_per_particle", "step_ms", "step_mean_ms",
 	               "collide_ms", "solve_ms", "broadphase_ms", "collide_median_ms", "solve_median_ms", "solve_toi_ms",
 	               "step_cpu_ms", "us_per_particle_step", "step_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8",
-	               "cpu_vs_polygon8", "growth_vs_smallest", "growth_cpu_vs_smallest", "particles_end", "discharged", "nonfinite", "escaped", "run_s"};
+	               "cpu_vs_polygon8", "growth_vs_smallest", "growth_cpu_vs_smallest", "particles_end", "discharged",
+	               "nonfinite", "escaped", "run_s"};
 	Table md;
 	md.columns = {"scene", "N", "variant", "step ms", "collide ms", "solve ms (broadphase)", "TOI ms", "CPU ms",
 	              "µs/particle-step", "step × 8-gon", "collide × 8-gon", "CPU × 8-gon", "growth (CPU)", "contacts/particle"};
