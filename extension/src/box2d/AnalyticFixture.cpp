@@ -150,7 +150,8 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 	// Box2D keeps mass data in float: mass and the moment about the body origin must not overflow.
 	const double reach = shape.BoundingRadius() + Length(local.p);
 	const double moment = double(def.density) * shape.Mass().area * reach * reach;
-	if (!(float(reach) < std::numeric_limits<float>::max() && float(moment) < std::numeric_limits<float>::max()))
+	const double most = std::numeric_limits<float>::max(); // compared in double: a cast out of range is undefined
+	if (!(reach < most && moment < most))
 		throw InvalidParameter("CreateAnalyticFixture", "shape", "is too large for Box2D's float mass data, bounding radius",
 		                       shape.BoundingRadius());
 
