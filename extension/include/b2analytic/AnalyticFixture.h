@@ -49,6 +49,8 @@
 //    non-null def.shape, a non-finite local pose, a negative or non-finite density, friction,
 //    restitution or restitution threshold, bad patch parameters, a body whose pose is not finite.
 //    Bad shape parameters never get this far: the shape factories refuse them.
+//    Inside a Box2D callback, catch what you call: Box2D is not exception-safe, and an
+//    exception leaving b2World::Step leaves the world locked.
 // What is not allowed and cannot be detected (undefined behaviour, exactly as in Box2D, which
 // has no way to tell a dangling pointer from a live one):
 //  - using a b2Body* or b2Fixture* after DestroyBody/DestroyFixture or after its world was
