@@ -478,7 +478,7 @@ struct KindStats
 	std::uint64_t checked = 0, exact = 0, illConditioned = 0, grazing = 0, touchingWrong = 0;
 	std::uint64_t estimateMisses = 0; ///< built-answer error above 10× the cheap estimate + 1e-14
 	std::uint64_t inaccurate = 0;     ///< point or level error above 1e4 times its rounding floor
-	std::map<std::string, std::uint64_t> methods;
+	std::map<std::string, std::uint64_t> methods, failures;
 	Max point, pointWell, level, normal, estimate, separation, surface, axisExcess, pointExcess, levelExcess;
 	Histogram hPoint, hLevel, hNormal, hSeparation;
 	double seconds = 0.0;
@@ -505,7 +505,7 @@ struct KindStats
 		if (k.expectedFailure) ++expectedFailures;
 		else if (k.status == SolveStatus::converged) ++converged;
 		else if (k.status == SolveStatus::convergedAfterFallback) ++fallback;
-		else ++failed;
+		else { ++failed; ++failures[k.failure]; }
 		if (k.status != SolveStatus::failed) ++methods[MethodName(k.method)];
 		if (k.touchingWrong) ++touchingWrong;
 		if (k.grazing) ++grazing;
@@ -545,6 +545,9 @@ struct KindStats
 		Json m = Json::object();
 		for (const auto& [name, n] : methods) m[name] = n;
 		j["methods"] = m;
+		Json why = Json::object();
+		for (const auto& [reason, n] : failures) why[reason] = n;
+		j["failure_reasons"] = why;
 		j["checked"] = checked;
 		j["checked_against_built_answer"] = exact;
 		j["max_point_error"] = point.ToJson();

@@ -41,6 +41,7 @@ struct Pair
 	Pose pa, pb;
 	V built;        // the point the configuration was built for (long-double solution)
 	LD builtLevel;  // its level
+	V builtNormal{}; // its normal (A's outward one), where a test checks normals
 	/// The smaller bounding radius: the unit of point errors.
 	double Size() const { return std::min(a->BoundingRadius(), b->BoundingRadius()); }
 };
@@ -92,16 +93,28 @@ ref::SurfaceMinResult DenseScale(const Pair& p)
 	return ref::SurfaceMin(p.ra, ref::Of(p.pa), p.rb, ref::Of(p.pb), p.rb.Own(), 8192, 8);
 }
 
-// Two 1000:1 superellipses side by side at their tips, tangent to 1e-16 (A 221 × 0.22, n = 2.24,
-// m = 19.4; B 308 × 0.31, n = 3.71, m = 19.9): Newton stops at its iteration cap and the min–max
-// fallback returned C = 1.000114, 2.6e-5 of the size off, with a normal 0.21 rad off.
-Pair TangentNeedles()
+// Needle pairs where Newton stops at its iteration cap (it would converge in 113 iterations in the
+// first) and the Newton polish of the min–max answer does too, so the raw min–max answer is
+// returned.
+std::vector<Pair> MinMaxPairs()
 {
-	return Superellipses("tangent 1000:1 needles", 0x1.babb1a588062bp+7, 0x1.c55b3dcb43fa9p-3, 0x1.1f0b22a0ba1afp+1,
-	                     0x1.35f6190a86954p+4, 0x1.33bf5028c713bp+8, 0x1.3b221cd5c9ce8p-2, 0x1.daa08ae863d5fp+1,
-	                     0x1.3ebb98b8a6c4p+4, Pose(Vec2(-0x1.3d8d784360796p+6, 0x1.39fbe16279857p+7), 0x1.a8ac5a07421f8p-2),
-	                     Pose(Vec2(-0x1.111c27c44348ap+7, 0x1.9b5fae9f646cap+8), -0x1.218a76065806p-1),
-	                     V{123.14739546727164L, 246.309516223099L}, 0.99999999999999978L);
+	// Two 1000:1 superellipses tangent at their tips to 1e-16 (A 221 × 0.22, n = 2.24, m = 19.4;
+	// B 308 × 0.31, n = 3.71, m = 19.9): C = 1.000114, 2.6e-5 of the size off, normal 0.21 rad off.
+	Pair tangent = Superellipses("tangent 1000:1 needles", 0x1.babb1a588062bp+7, 0x1.c55b3dcb43fa9p-3, 0x1.1f0b22a0ba1afp+1,
+	                             0x1.35f6190a86954p+4, 0x1.33bf5028c713bp+8, 0x1.3b221cd5c9ce8p-2, 0x1.daa08ae863d5fp+1,
+	                             0x1.3ebb98b8a6c4p+4, Pose(Vec2(-0x1.3d8d784360796p+6, 0x1.39fbe16279857p+7), 0x1.a8ac5a07421f8p-2),
+	                             Pose(Vec2(-0x1.111c27c44348ap+7, 0x1.9b5fae9f646cap+8), -0x1.218a76065806p-1),
+	                             V{123.14739546727164L, 246.309516223099L}, 0.99999999999999978L);
+	tangent.builtNormal = V{0.20458497112143526L, 0.9788488083413298L};
+	// A 0.00026 × 0.26 needle (n = 14.7, m = 2.01) at C = 611 from a 0.0039 × 1.34 one (n = 16,
+	// m = 3): C 0.3% off, the point 0.04 of the size off and the normal 1.4 rad off.
+	Pair far = Superellipses("needles at C = 611", 0x1.12f6a3f551dep-12, 0x1.0c84dc1d91f2dp-2, 0x1.d77451f1adcffp+3,
+	                         0x1.016643b04483bp+1, 0x1.003a70255a8ffp-8, 0x1.576fd73878412p+0, 0x1p+4, 0x1.8p+1,
+	                         Pose(Vec2(-0x1.c03516e0bbd7fp+2, 0x1.f9ba45d49b788p-1), -0x1.9a05cdff07625p+0),
+	                         Pose(Vec2(0x1.14ef36d6fb107p+3, 0x1.d73fd83526e47p+2), -0x1.e8f1f1ebd7204p-1),
+	                         V{-0.6382971402472877L, 0.7914338606250337L}, 610.6582777069664L);
+	far.builtNormal = V{0.9999955056311847L, 0.002998118982172872L};
+	return {tangent, far};
 }
 } // namespace
 
@@ -175,10 +188,13 @@ TEST_CASE("stress: the dense references of the known failures agree with the bui
 		CHECK(double(std::fabs(m.value - p.builtLevel) / p.builtLevel) < 1e-12);
 		CHECK(double(ref::Len(m.point - p.built)) < 1e-7 * p.Size());
 	}
-	const Pair p = TangentNeedles();
-	const ref::CommonLevelResult r = ref::CommonLevelRef(p.ra, ref::Of(p.pa), p.rb, ref::Of(p.pb));
-	CHECK(double(std::fabs(r.level - p.builtLevel)) < 1e-14);
-	CHECK(double(ref::Len(r.point - p.built)) < 1e-7 * p.Size());
+	for (const Pair& p : MinMaxPairs())
+	{
+		INFO(std::string(p.name));
+		const ref::CommonLevelResult r = ref::CommonLevelRef(p.ra, ref::Of(p.pa), p.rb, ref::Of(p.pb));
+		CHECK(double(std::fabs(r.level - p.builtLevel) / p.builtLevel) < 1e-13);
+		CHECK(double(ref::Len(r.point - p.built)) < 1e-7 * p.Size());
+	}
 }
 
 TEST_CASE("stress (known failure): the grid scale of a small heart against a large particle finds its global minimum" *
@@ -197,17 +213,20 @@ TEST_CASE("stress (known failure): the grid scale of a small heart against a lar
 	}
 }
 
-TEST_CASE("stress (known failure): the min-max fallback is as exact as Newton for tangent 1000:1 needles" *
+TEST_CASE("stress (known failure): the automatic common level of 1000:1 needles is as exact as Newton's" *
           doctest::should_fail())
 {
-	// When Newton fails, the min–max answer is polished by Newton from there; where that polish
-	// fails too (a singular Jacobian) the raw min–max answer is returned, whose inner minimisation
-	// by function values stops at ~sqrt(eps) of the point.
-	const Pair p = TangentNeedles();
-	const LevelResult l = SolveCommonLevel(*p.a, p.pa, *p.b, p.pb);
-	REQUIRE(l.Ok());
-	CHECK(double(std::fabs(l.level - p.builtLevel)) < 1e-9);
-	CHECK(double(ref::Dist(l.point, p.built)) < 1e-8 * p.Size());
+	// When Newton fails the min–max answer is polished by Newton; where that polish fails too the
+	// raw min–max answer is returned, and it can be far off.
+	for (const Pair& p : MinMaxPairs())
+	{
+		INFO(std::string(p.name));
+		const LevelResult l = SolveCommonLevel(*p.a, p.pa, *p.b, p.pb);
+		REQUIRE(l.Ok());
+		CHECK(double(std::fabs(l.level - p.builtLevel) / p.builtLevel) < 1e-9);
+		CHECK(double(ref::Dist(l.point, p.built)) < 1e-8 * p.Size());
+		CHECK(double(ref::Len(ref::FromVec(l.normal) - p.builtNormal)) < 1e-6);
+	}
 }
 
 TEST_CASE("stress (known failure): nearly concentric high-exponent particles get a common level" * doctest::should_fail())
