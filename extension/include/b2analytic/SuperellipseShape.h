@@ -22,8 +22,9 @@ namespace b2a
 class SuperellipseShape final : public Shape
 {
 public:
-	/// Superellipse |x/a|^n + |y/b|^m; throws InvalidParameter for a, b not finite and > 0 or
-	/// n, m not finite and ≥ 1.
+	/// Superellipse |x/a|^n + |y/b|^m; throws InvalidParameter for a, b not finite and > 0, n, m
+	/// not finite and ≥ 1, or a combination whose powers leave double precision's range (|1/a|^n
+	/// under- or overflowing, a³b overflowing: a = 1e185 with n = 2, a = 1e30 with n = 12).
 	SuperellipseShape(double a, double b, double n, double m);
 	/// Normalised form (|x/a|^{2ζ} + |y/b|^{2ζ})^{1/ζ} of paper eq. 1, ζ ≥ 1/2.
 	static std::shared_ptr<SuperellipseShape> FromZeta(double a, double b, double zeta);

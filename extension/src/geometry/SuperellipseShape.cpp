@@ -36,6 +36,28 @@ void RequireExponent(const char* what, const char* field, double v, double lowes
 }
 
 double Sign(double t) { return t > 0.0 ? 1.0 : (t < 0.0 ? -1.0 : 0.0); }
+
+void RequireRepresentable(const char* what, const SuperellipseShape& s)
+{
+	// Lengths and exponents whose powers leave double precision's range have no usable surface:
+	// |1/a|^n underflows to 0 for a = 1e185, n = 2, and the radius along x comes out infinite;
+	// it overflows for a = 1e-30, n = 100, and the radius is 0; |cos 45°|^n underflows for n in the
+	// thousands. Found by the fuzzers: such shapes were accepted and a solver threw later. Each
+	// axis end must come back as the semi-axis, and the scaled diagonal as a point on the surface.
+	auto near = [](double value, double expected) { return std::fabs(value - expected) <= 1e-9 * expected; };
+	if (!near(s.RadiusAt(Vec2(1.0, 0.0), 1.0), s.A()))
+		throw InvalidParameter(what, "a", "must keep |x/a|^n within double precision's range (n = " + FormatNumber(s.N()) + ")", s.A());
+	if (!near(s.RadiusAt(Vec2(0.0, 1.0), 1.0), s.B()))
+		throw InvalidParameter(what, "b", "must keep |y/b|^m within double precision's range (m = " + FormatNumber(s.M()) + ")", s.B());
+	const Vec2 u = Normalize(Vec2(s.A(), s.B()));
+	const double r = s.RadiusAt(u, 1.0);
+	if (!(r > 0.0) || !std::isfinite(r) || !near(s.Level(r * u), 1.0))
+	{
+		const bool nLarger = s.N() >= s.M();
+		throw InvalidParameter(what, nLarger ? "n" : "m",
+		                       "must keep |x/a|^n + |y/b|^m within double precision's range between the axes", nLarger ? s.N() : s.M());
+	}
+}
 } // namespace
 
 SuperellipseShape::SuperellipseShape(double a, double b, double n, double m) : SuperellipseShape(a, b, n, m, 0.0) {}
@@ -66,7 +88,11 @@ SuperellipseShape::SuperellipseShape(double a, double b, double n, double m, dou
 		AddCorner(0.0);
 		AddCorner(-kPi);
 	}
+	RequireRepresentable(what, *this);
 	const MassProperties mass = ClosedFormMass(a, b, n, m);
+	if (!std::isfinite(mass.area) || !(mass.area > 0.0) || !std::isfinite(mass.polarMoment))
+		throw InvalidParameter(what, a >= b ? "a" : "b", "must keep the area and second moments (a³b, ab³) within double precision's range",
+		                       a >= b ? a : b);
 	double radius = -1.0; // numeric unless a closed form exists
 	if (n == 2.0 && m == 2.0)
 		radius = std::max(a, b);
@@ -221,10 +247,12 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 		return Vec2(m_a * Sign(e.x), 0.0);
 	// Lagrange: |e_x| = κ n |X|^{n−1}, |e_y| = κ m |Y|^{m−1}, |X|^n + |Y|^m = 1. With s = log κ,
 	// g(s) = exp(αx (cx − s)) + exp(αy (cy − s)) − 1, α = n/(n−1), c = log(|e|/n): convex and
-	// decreasing, so Newton from the left (g ≥ 0 at s = min(cx, cy)) is monotone.
+	// decreasing, so Newton from the left (g ≥ 0) is monotone. Start at s = max(cx, cy): one term
+	// is 1 there, so g ≥ 0, and neither term can overflow (from min(cx, cy) the other term is
+	// exp(α·|cx − cy|), infinite for exponents near 1 or directions near an axis).
 	const double ax = m_n / (m_n - 1.0), ay = m_m / (m_m - 1.0);
 	const double cx = std::log(std::fabs(e.x) / m_n), cy = std::log(std::fabs(e.y) / m_m);
-	double s = std::min(cx, cy);
+	double s = std::max(cx, cy);
 	for (int it = 0; it < 100; ++it)
 	{
 		const double tx = std::exp(ax * (cx - s)), ty = std::exp(ay * (cy - s));

@@ -1,0 +1,136 @@
+// Inputs the fuzzers (tests/fuzz) found to break the geometry, checked against independent
+// references. The crashing fuzzer inputs are kept in tests/fuzz/corpus/solvers/.
+//
+// Reference for superellipse supports: the boundary |x/a|^n + |y/b|^m = 1 parametrised by
+// x = a·sgn(cos t)|cos t|^{2/n}, y = b·sgn(sin t)|sin t|^{2/m} (then |x/a|^n + |y/b|^m =
+// cos²t + sin²t), maximised densely in t and refined by golden section in long double.
+#include <doctest/doctest.h>
+
+#include "b2analytic/b2analytic.h"
+#include "TestSupport.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace b2a;
+using namespace b2a::test;
+
+namespace
+{
+// max over the boundary of d·x, and the boundary point, by the parametrisation above.
+long double SupportValueRef(double a, double b, double n, double m, Vec2 d)
+{
+	auto value = [&](long double t) {
+		const long double c = std::cos(t), s = std::sin(t);
+		const long double x = a * std::copysign(std::pow(std::fabs(c), 2.0L / n), c);
+		const long double y = b * std::copysign(std::pow(std::fabs(s), 2.0L / m), s);
+		return d.x * x + d.y * y;
+	};
+	const int count = 4096;
+	const long double pi = 3.141592653589793238462643383279502884L;
+	int best = 0;
+	long double bestValue = value(-pi);
+	for (int k = 1; k < count; ++k)
+	{
+		const long double v = value(-pi + 2.0L * pi * k / count);
+		if (v > bestValue) { bestValue = v; best = k; }
+	}
+	// Golden section between the neighbours of the best sample.
+	long double lo = -pi + 2.0L * pi * (best - 1) / count, hi = -pi + 2.0L * pi * (best + 1) / count;
+	const long double r = 0.6180339887498948482L;
+	for (int it = 0; it < 200 && hi - lo > 1e-19L; ++it)
+	{
+		const long double x1 = hi - r * (hi - lo), x2 = lo + r * (hi - lo);
+		if (value(x1) < value(x2)) lo = x1; else hi = x2;
+	}
+	return std::max(bestValue, value(0.5L * (lo + hi)));
+}
+} // namespace
+
+TEST_CASE("fuzz regression: superellipse support with unequal exponents near 1 is finite along and near the axes")
+{
+	// Found by b2a_fuzz_solvers: superellipse(a=1.82056420302608, b=1.0000457129891656,
+	// n=1.02568093385214, m=1.0446478980697338) had Support((cos π/2, sin π/2)) = (NaN, NaN):
+	// the Lagrange iteration started where one of its exponentials, exp(n/(n−1)·|Δ|), overflows.
+	// Its AABB, polygon contacts and time-of-impact bounds were NaN with it.
+	struct Case { double a, b, n, m; };
+	const std::vector<Case> cases = {
+		{1.82056420302608, 1.0000457129891656, 1.02568093385214, 1.0446478980697338},
+		{1.0, 1.0, 1.001, 1.021}, // NaN for 30% of all directions before the fix
+		{0.5, 2.0, 1.01, 3.0},
+		{2.0, 0.5, 6.0, 1.05},
+	};
+	for (const Case& c : cases)
+	{
+		CAPTURE(c.a);
+		CAPTURE(c.b);
+		CAPTURE(c.n);
+		CAPTURE(c.m);
+		const auto s = MakeSuperellipse(c.a, c.b, c.n, c.m);
+		std::vector<double> angles = {0.5 * kPi, kPi, 1.5 * kPi, 0.0, 1e-12, 0.5 * kPi - 1e-9, 0.5 * kPi + 1e-5};
+		for (int k = 0; k < 12; ++k)
+			angles.push_back(0.1 + 2.0 * kPi * k / 12);
+		for (double t : angles)
+		{
+			CAPTURE(t);
+			const Vec2 d(std::cos(t), std::sin(t));
+			const Vec2 p = s->Support(d);
+			REQUIRE(IsFinite(p));
+			CHECK(RelativeError(s->Level(p), 1.0) < 1e-9);
+			const double ref = double(SupportValueRef(c.a, c.b, c.n, c.m, d));
+			CHECK(std::fabs(Dot(p, d) - ref) <= 1e-12 * std::max(c.a, c.b));
+		}
+		// The AABB that Box2D's broad phase gets is finite and holds the shape's axis ends, which
+		// turned by 45° span √2·max(a, b) along x.
+		const Box box = s->ComputeAABB(Pose(Vec2(3.0, -1.0), 0.25 * kPi));
+		CHECK(IsFinite(box.lower));
+		CHECK(IsFinite(box.upper));
+		CHECK(box.upper.x - box.lower.x >= std::sqrt(2.0) * std::max(c.a, c.b) * (1.0 - 1e-12));
+	}
+}
+
+TEST_CASE("fuzz regression: a superellipse whose powers leave double range is refused when it is made, naming the field")
+{
+	// Found by b2a_fuzz_solvers: ellipse(a=1.8697385171969869e+185, b=0.17782567794691206) was
+	// accepted, but |1/a|² underflows to 0, so its radius along x was infinite and the first
+	// contact threw InvalidParameter from inside the solver ("no finite surface point ... field
+	// 'function'"). A superellipse of size 1e-30 with n = 100 had bounding radius 0.
+	auto field = [](double a, double b, double n, double m) -> std::string {
+		try
+		{
+			MakeSuperellipse(a, b, n, m);
+		}
+		catch (const InvalidParameter& e)
+		{
+			CHECK(std::string(e.what()).find("double precision's range") != std::string::npos);
+			return e.Field();
+		}
+		return "";
+	};
+	CHECK(field(1.8697385171969869e+185, 0.17782567794691206, 2.0, 2.0) == "a");
+	CHECK(field(0.5, 1e-200, 2.0, 2.0) == "b");
+	CHECK(field(1e-30, 1e-30, 100.0, 100.0) == "a");
+	CHECK(field(1e30, 2.0, 12.0, 12.0) == "a");
+	CHECK(field(1.0, 1.0, 1e4, 1e4) == "n");      // |cos 45°|^n underflows between the axes
+	CHECK(field(1e120, 1e120, 1.0, 1.0) == "a");  // the second moment a³b overflows
+	CHECK_THROWS_AS(MakeEllipse(1.7976931348623157e308, 0.05), InvalidParameter);
+
+	// What is representable is still accepted, with its closed-form area π·a·b.
+	for (double size : {1e-50, 1e-3, 1e3, 1e50})
+	{
+		CAPTURE(size);
+		const auto e = MakeEllipse(size, 2.0 * size);
+		CHECK(e->Mass().area == doctest::Approx(kPi * 2.0 * size * size).epsilon(1e-14));
+		CHECK(e->BoundingRadius() == doctest::Approx(2.0 * size).epsilon(1e-15));
+	}
+	// Exponent 8 keeps sizes up to about 1e38 (size⁸ within range).
+	for (double size : {1e-30, 1e-3, 1e3, 1e30})
+	{
+		CAPTURE(size);
+		const auto s = MakeSuperellipse(size, size, 6.0, 8.0);
+		CHECK(std::isfinite(s->BoundingRadius()));
+		CHECK(s->BoundingRadius() > size);
+	}
+	CHECK(MakeSuperellipse(1.0, 1.0, 1000.0, 1000.0)->Mass().area == doctest::Approx(4.0).epsilon(1e-2));
+}
