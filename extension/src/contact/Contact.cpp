@@ -3,6 +3,7 @@
 #include "b2analytic/SurfaceQueries.h"
 
 #include "contact/PairFrame.h"
+#include "contact/ResultChecks.h"
 #include "contact/SolverCore.h"
 #include "numerics/RootFinding.h"
 
@@ -364,8 +365,10 @@ ContactFunction GetContactFunction(ShapeFamily a, ShapeFamily b)
 	return Table().cell[int(a)][int(b)];
 }
 
-ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
-                             const SolverOptions& options, WarmStart* warm)
+namespace
+{
+ContactResult Dispatch(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
+                       const SolverOptions& options, WarmStart* warm)
 {
 	if (method == MethodChoice::grid)
 		return GridContact(a, pa, b, pb, options, warm);
@@ -387,6 +390,15 @@ ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, con
 		return FlipContact(table.cell[i][j](b, pb, a, pa, options, nullptr));
 	}
 	return table.cell[i][j](a, pa, b, pb, options, warm);
+}
+} // namespace
+
+ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
+                             const SolverOptions& options, WarmStart* warm)
+{
+	if (!PoseFinite(pa) || !PoseFinite(pb))
+		return NonFinitePoseFailure<ContactResult>();
+	return CheckedResult(Dispatch(a, pa, b, pb, method, options, warm));
 }
 
 } // namespace b2a

@@ -1,6 +1,7 @@
 // b2analytic: choosing a level solver, and the names of statuses and methods.
 #include "b2analytic/CommonLevel.h"
 
+#include "contact/ResultChecks.h"
 #include "contact/SolverCore.h"
 
 #include <cmath>
@@ -58,6 +59,12 @@ LevelResult CircleLevel(const Shape& a, const Pose& pa, const Shape& b, const Po
 LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
                              const SolverOptions& options, WarmStart* warm)
 {
+	if (!PoseFinite(pa) || !PoseFinite(pb))
+	{
+		if (warm)
+			warm->valid = false;
+		return NonFinitePoseFailure<LevelResult>();
+	}
 	LevelResult r;
 	const bool smooth = a.IsSmoothConvex() && b.IsSmoothConvex();
 	const bool convex = a.IsConvex() && b.IsConvex();
@@ -104,6 +111,7 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 			return r;
 		}
 	}
+	r = CheckedResult(r);
 	if (warm)
 	{
 		warm->valid = r.Ok() && r.multiplier > 0.0;
@@ -119,9 +127,11 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 LevelResult SolveScaleA(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
                         const SolverOptions& options)
 {
+	if (!PoseFinite(pa) || !PoseFinite(pb))
+		return NonFinitePoseFailure<LevelResult>();
 	if (method == MethodChoice::newton)
-		return SolveScaleANewton(a, pa, b, pb, options);
-	return SolveGridScale(a, pa, b, pb, options);
+		return CheckedResult(SolveScaleANewton(a, pa, b, pb, options));
+	return CheckedResult(SolveGridScale(a, pa, b, pb, options));
 }
 
 } // namespace b2a

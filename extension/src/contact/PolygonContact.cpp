@@ -2,6 +2,7 @@
 #include "b2analytic/PolygonContact.h"
 
 #include "b2analytic/SurfaceQueries.h"
+#include "contact/ResultChecks.h"
 #include "numerics/RootFinding.h"
 
 #include <cmath>
@@ -86,7 +87,7 @@ ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* 
 	c.point = 0.5 * (c.pointA + c.pointB);
 	c.level = 0.0;
 	c.touching = best <= 0.0;
-	return c;
+	return CheckedResult(c);
 }
 
 } // namespace b2a

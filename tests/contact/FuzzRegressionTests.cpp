@@ -1,0 +1,131 @@
+// Inputs the solver fuzzer (tests/fuzz, b2a_fuzz_solvers) found to break the contact solvers'
+// promises (ContactResult.h: a result that is not failed has only finite fields, a failed one
+// no NaN). The crashing fuzzer inputs are kept in tests/fuzz/corpus/solvers/.
+#include <doctest/doctest.h>
+
+#include "b2analytic/b2analytic.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+using namespace b2a;
+
+namespace
+{
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kInf = std::numeric_limits<double>::infinity();
+
+bool NoNaN(const ContactResult& c)
+{
+	return !std::isnan(c.level) && !std::isnan(c.point.x) && !std::isnan(c.point.y) && !std::isnan(c.normal.x) &&
+	       !std::isnan(c.normal.y) && !std::isnan(c.pointA.x) && !std::isnan(c.pointA.y) && !std::isnan(c.pointB.x) &&
+	       !std::isnan(c.pointB.y) && !std::isnan(c.separation);
+}
+
+bool NoNaN(const LevelResult& r)
+{
+	return !std::isnan(r.level) && !std::isnan(r.point.x) && !std::isnan(r.point.y) && !std::isnan(r.normal.x) &&
+	       !std::isnan(r.normal.y) && !std::isnan(r.multiplier);
+}
+
+bool Mentions(const char* text, const char* word) { return std::string(text).find(word) != std::string::npos; }
+
+// A rotation from its cosine and sine exactly as the fuzzer printed them.
+Rot MakeRot(double c, double s)
+{
+	Rot r;
+	r.c = c;
+	r.s = s;
+	return r;
+}
+} // namespace
+
+TEST_CASE("fuzz regression: a pose that is not finite is an explicit failure, never a converged contact of NaN")
+{
+	// Found by b2a_fuzz_solvers: with B at (NaN, 0) every ComputeContact answered "converged,
+	// overlap_axis" with NaN point, pointB and separation (a NaN distance passed the "centres
+	// coincide" test); with B at (inf, 0) two circles answered "converged" with a NaN normal.
+	const ShapePtr ellipse = MakeEllipse(1.0, 0.5);
+	const ShapePtr blocky = MakeSuperellipse(1.0, 1.0, 4.0, 4.0);
+	const ShapePtr heart = MakeHeart(1.0);
+	const ShapePtr circle = MakeCircle(1.0);
+	const Pose bad[] = {Pose(Vec2(kNaN, 0.0), 0.0), Pose(Vec2(kInf, 0.0), 0.0), Pose(Vec2(0.0, -kInf), 0.0),
+	                    Pose(Vec2(1.0, 0.0), kNaN), Pose(Vec2(1.0, 0.0), kInf)};
+	for (const Pose& pb : bad)
+	{
+		CAPTURE(pb.p.x);
+		CAPTURE(pb.p.y);
+		CAPTURE(pb.q.c);
+		for (MethodChoice m : {MethodChoice::automatic, MethodChoice::newton, MethodChoice::grid})
+		{
+			for (const Shape* a : {ellipse.get(), heart.get(), circle.get()})
+			{
+				for (const Shape* b : {blocky.get(), circle.get()})
+				{
+					const ContactResult c = ComputeContact(*a, Pose(), *b, pb, m);
+					CHECK(c.status == SolveStatus::failed);
+					CHECK(c.method == SolveMethod::none);
+					CHECK(Mentions(c.failure, "pose"));
+					CHECK(NoNaN(c));
+					// Either side: A's pose is checked as well.
+					CHECK(!ComputeContact(*b, pb, *a, Pose(), m).Ok());
+				}
+			}
+			const LevelResult common = SolveCommonLevel(*ellipse, Pose(), *blocky, pb, m);
+			CHECK(!common.Ok());
+			CHECK(Mentions(common.failure, "pose"));
+			CHECK(NoNaN(common));
+			const LevelResult scale = SolveScaleA(*heart, Pose(), *ellipse, pb, m);
+			CHECK(!scale.Ok());
+			CHECK(Mentions(scale.failure, "pose"));
+			CHECK(NoNaN(scale));
+		}
+		// A warm start is not left claiming a solution.
+		WarmStart warm;
+		warm.valid = true;
+		CHECK(!SolveCommonLevel(*ellipse, Pose(), *blocky, pb, MethodChoice::automatic, {}, &warm).Ok());
+		CHECK(!warm.valid);
+	}
+	// The time of impact fails with the same reason for a rotation that is not finite (its own
+	// check covers positions and velocities).
+	Motion ma, mb;
+	mb.pose = Pose(Vec2(3.0, 0.0), kNaN);
+	mb.velocity = Vec2(-1.0, 0.0);
+	const TimeOfImpactResult t = TimeOfImpact(*ellipse, ma, *blocky, mb, 2.0);
+	CHECK(!t.Ok());
+	CHECK(Mentions(t.failure, "pose"));
+}
+
+TEST_CASE("fuzz regression: finite input whose answer overflows is a failure, not a converged infinity")
+{
+	// Found by b2a_fuzz_solvers: circle(r=0.05) at (0.96, -2.1) and circle(r=1.0000457) at
+	// (-2.09, 1.05e300): the closed form's level (d / (rA + rB))² is inf, reported as converged.
+	const auto a = MakeCircle(0.05000000000000001), b = MakeCircle(1.0000457129891656);
+	const Pose pa(Vec2(0.96145636764519515, -2.099963244614115), MakeRot(-0.81757942192811917, 0.57581584629088012));
+	const Pose pb(Vec2(-2.0935541764033014, 1.0500457129891656e+300), MakeRot(-1.0, -1.2246467991473532e-16));
+	for (MethodChoice m : {MethodChoice::automatic, MethodChoice::newton, MethodChoice::grid})
+	{
+		const ContactResult c = ComputeContact(*a, pa, *b, pb, m);
+		CHECK(NoNaN(c));
+		if (c.Ok())
+		{
+			CHECK(std::isfinite(c.level));
+			CHECK(std::isfinite(c.separation));
+		}
+		const LevelResult l = SolveCommonLevel(*a, pa, *b, pb, m);
+		CHECK(NoNaN(l));
+		if (l.Ok())
+			CHECK(std::isfinite(l.level));
+	}
+	const ContactResult closed = ComputeContact(*a, pa, *b, pb);
+	CHECK(closed.status == SolveStatus::failed);
+	CHECK(closed.method == SolveMethod::closedForm);
+	CHECK(Mentions(closed.failure, "not finite"));
+	// Within range the same pair still has its closed form: 1e150 apart, level (d / 1.05)².
+	const Pose near(Vec2(0.0, 1e150), 0.0);
+	const ContactResult ok = ComputeContact(*a, Pose(), *b, near);
+	REQUIRE(ok.Ok());
+	CHECK(ok.level == doctest::Approx(std::pow(1e150 / (0.05000000000000001 + 1.0000457129891656), 2.0)).epsilon(1e-13));
+	CHECK(ok.separation == doctest::Approx(1e150).epsilon(1e-13));
+}
