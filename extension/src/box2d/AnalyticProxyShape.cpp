@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <new>
+#include <typeinfo>
 
 namespace b2a
 {
@@ -58,6 +59,11 @@ const AnalyticProxyShape* AnalyticProxyShape::From(const b2Shape* shape)
 		return nullptr;
 	const b2PolygonShape* polygon = static_cast<const b2PolygonShape*>(shape);
 	if (polygon->m_vertices[7].x != kTag.x || polygon->m_vertices[7].y != kTag.y)
+		return nullptr;
+	// The tag alone is not proof: a plain b2PolygonShape leaves slot 7 uninitialised, so one made
+	// where a proxy lived before (CreateAnalyticFixture's on the stack, a freed block) can carry
+	// the tag into its fixture's copy. The dynamic type decides (found by b2a_fuzz_world).
+	if (typeid(*shape) != typeid(AnalyticProxyShape))
 		return nullptr;
 	return static_cast<const AnalyticProxyShape*>(shape);
 }
