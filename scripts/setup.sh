@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Install what b2analytic needs from Debian's packages, and only what is missing.
 # Safe to run any number of times: with everything present it installs nothing.
+# --fuzz: also clang (libFuzzer and its sanitizers, for scripts/fuzz.sh).
 set -euo pipefail
 
 packages=(
@@ -10,6 +11,13 @@ packages=(
 	doctest-dev             # unit tests
 	nlohmann-json3-dev      # JSON in and out of the tools, demos and benchmarks
 )
+
+for arg in "$@"; do
+	case "$arg" in
+		--fuzz) packages+=(clang libclang-rt-dev) ;; # clang++, and libFuzzer with the sanitizer runtimes (only recommended by clang)
+		*) echo "setup: unknown option '$arg' (expected --fuzz)" >&2; exit 2 ;;
+	esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
