@@ -15,52 +15,16 @@
 
 #include <sys/wait.h>
 
+#include "CsvTable.h"
+
 #ifdef B2A_BENCH_SCENES // the benchmarks are optional (B2A_BUILD_BENCHMARKS)
 
 namespace
 {
-using Row = std::map<std::string, std::string>;
+using Row = b2a::test::CsvRow;
+using b2a::test::ReadCsv;
 
-std::vector<std::string> SplitCsvLine(const std::string& line)
-{
-	std::vector<std::string> cells;
-	std::stringstream in(line);
-	std::string cell;
-	while (std::getline(in, cell, ','))
-		cells.push_back(cell);
-	return cells;
-}
-
-// The CSV as rows keyed by column name; `header` receives the column names.
-std::vector<Row> ReadCsv(const std::string& path, std::vector<std::string>& header)
-{
-	std::ifstream f(path);
-	REQUIRE(f.good());
-	std::string line;
-	REQUIRE(std::getline(f, line));
-	header = SplitCsvLine(line);
-	std::vector<Row> rows;
-	while (std::getline(f, line))
-	{
-		const std::vector<std::string> cells = SplitCsvLine(line);
-		REQUIRE(cells.size() == header.size());
-		Row row;
-		for (size_t i = 0; i < cells.size(); ++i)
-			row[header[i]] = cells[i];
-		rows.push_back(row);
-	}
-	return rows;
-}
-
-double Number(const Row& row, const std::string& column)
-{
-	const std::string& text = row.at(column);
-	char* end = nullptr;
-	const double v = std::strtod(text.c_str(), &end);
-	INFO("column " << column << " = '" << text << "'");
-	REQUIRE(*end == '\0');
-	return v;
-}
+double Number(const Row& row, const std::string& column) { return b2a::test::CsvNumber(row, column); }
 
 int ExitStatus(const std::string& args)
 {

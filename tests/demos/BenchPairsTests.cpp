@@ -1,0 +1,77 @@
+// b2analytic tests: the pair benchmark in a reduced run: its table has the promised columns and
+// a row for every method, our exact methods agree with the long-double references, and the
+// approximations it compares against are measurably approximate.
+#include <doctest/doctest.h>
+
+#include "CsvTable.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#ifdef B2A_BENCH_PAIRS // the benchmarks are optional (B2A_BUILD_BENCHMARKS)
+
+using namespace b2a::test;
+
+TEST_CASE("b2a_bench_pairs: ellipse and heart pairs, every method timed and checked against the references")
+{
+	const std::string out = "demo_out/bench_pairs";
+	std::filesystem::remove_all(out);
+	std::filesystem::create_directories("demo_out");
+	const std::string cmd = std::string("\"") + B2A_BENCH_PAIRS + "\" --quick --poses 4 --repeats 1 --families " +
+	                        "ellipse_a3,heart_heart --out " + out + " > " + out + ".stdout 2> " + out + ".stderr";
+	INFO("command: " << cmd);
+	REQUIRE(std::system(cmd.c_str()) == 0);
+
+	std::vector<std::string> header;
+	const std::vector<CsvRow> rows = ReadCsv(out + "/pairs.csv", header);
+	const std::vector<std::string> promised = {"pair", "method", "ns_per_query", "max_point_error", "max_normal_error",
+	                                           "max_separation_error", "failures"};
+	REQUIRE(header.size() >= promised.size());
+	CHECK(std::vector<std::string>(header.begin(), header.begin() + promised.size()) == promised);
+
+	std::set<std::string> ellipseMethods, heartMethods;
+	for (const CsvRow& r : rows)
+	{
+		CAPTURE(r.at("pair"));
+		CAPTURE(r.at("method"));
+		(r.at("pair") == "ellipse_a3" ? ellipseMethods : heartMethods).insert(r.at("method"));
+		const double ns = CsvNumber(r, "ns_per_query");
+		CHECK(std::isfinite(ns));
+		CHECK(ns > 0.0);
+		const std::string& m = r.at("method");
+		const bool exact = m == "newton_cold" || m == "newton_warm" || m == "auto" || m == "auto_warm" || m == "grid_refined";
+		if (exact)
+		{
+			// Against references computed independently in long double (PairReference.h).
+			CHECK(CsvNumber(r, "failures") == 0);
+			CHECK(CsvNumber(r, "max_point_error") < 1e-8);
+			CHECK(CsvNumber(r, "max_normal_error") < 1e-7);
+			CHECK(CsvNumber(r, "max_separation_error") < 1e-8);
+		}
+		if (m == "grid_64")
+			CHECK(CsvNumber(r, "max_point_error") > 1e-4); // the paper's plain grid: off by about a sample spacing
+		if (m == "box2d_gjk8" && r.at("max_point_error") != "n/a")
+			CHECK(CsvNumber(r, "max_point_error") > 1e-3); // an octagon is not an ellipse
+	}
+	const std::set<std::string> convex = {"newton_cold", "newton_warm", "auto", "auto_warm", "grid_64", "grid_256",
+	                                      "grid_1024", "grid_4096", "grid_refined", "box2d_polygon8", "box2d_obb",
+	                                      "box2d_gjk8", "box2d_gjk16", "box2d_gjk32", "box2d_gjk64"};
+	const std::set<std::string> hearts = {"auto", "grid_64", "grid_256", "grid_1024", "grid_4096", "grid_refined"};
+	CHECK(ellipseMethods == convex);
+	CHECK(heartMethods == hearts);
+	CHECK(std::filesystem::exists(out + "/pairs.md"));
+	CHECK(std::filesystem::exists(out + "/pairs_heart_heart.svg"));
+
+	// A pair family that does not exist is an error naming it, with exit status 2.
+	const std::string bad = std::string("\"") + B2A_BENCH_PAIRS + "\" --families no_such_pair --out " + out +
+	                        "_bad > /dev/null 2>&1";
+	CHECK(WEXITSTATUS(std::system(bad.c_str())) == 2);
+}
+
+#endif
