@@ -3,10 +3,12 @@
 //
 // Reference for superellipse supports: the boundary |x/a|^n + |y/b|^m = 1 parametrised by
 // x = a·sgn(cos t)|cos t|^{2/n}, y = b·sgn(sin t)|sin t|^{2/m} (then |x/a|^n + |y/b|^m =
-// cos²t + sin²t), maximised densely in t and refined by golden section in long double.
+// cos²t + sin²t), maximised densely in t and refined by golden section in long double. User
+// shapes: the closed-form area and radius of the ellipse they describe.
 #include <doctest/doctest.h>
 
 #include "b2analytic/b2analytic.h"
+#include "GeometryReference.h"
 #include "TestSupport.h"
 
 #include <cmath>
@@ -133,4 +135,23 @@ TEST_CASE("fuzz regression: a superellipse whose powers leave double range is re
 		CHECK(s->BoundingRadius() > size);
 	}
 	CHECK(MakeSuperellipse(1.0, 1.0, 1000.0, 1000.0)->Mass().area == doctest::Approx(4.0).epsilon(1e-2));
+}
+
+TEST_CASE("fuzz regression: a user shape's corner angle far outside [-pi, pi) is wrapped at once, not in steps of 2 pi")
+{
+	// Found by b2a_fuzz_solvers (a hang): a corner angle of 1e300 is finite, so UserShape took
+	// it, and the sampling wrapped it into [−π, π) by subtracting 2π until it got there, which
+	// never changes 1e300. Any finite angle now works, and means the same as its wrapped value.
+	for (double corner : {1e300, -1e300, 1e17, 100.0, -7.0})
+	{
+		CAPTURE(corner);
+		UserShapeDef def = UserEllipseDef(2.0, 1.0);
+		def.cornerAngles = {corner};
+		const auto s = MakeUserShape(def);
+		CHECK(s->Mass().area == doctest::Approx(2.0 * kPi).epsilon(1e-9));
+		CHECK(s->BoundingRadius() == doctest::Approx(2.0).epsilon(1e-9));
+		const auto samples = s->Samples();
+		CHECK(samples->angle.front() >= -kPi);
+		CHECK(samples->angle.back() < kPi);
+	}
 }

@@ -143,9 +143,10 @@ double TurnAngle(Vec2 a, Vec2 b)
 
 double WrapAngle(double t)
 {
-	while (t >= kPi) t -= 2.0 * kPi;
-	while (t < -kPi) t += 2.0 * kPi;
-	return t;
+	// One remainder, not a loop of 2π steps: a user's corner angle of 1e300 is finite, and
+	// subtracting 2π from it changes nothing (the loop never ended; found by the solver fuzzer).
+	t = std::remainder(t, 2.0 * kPi); // in [−π, π]
+	return t >= kPi ? t - 2.0 * kPi : t;
 }
 
 } // namespace
