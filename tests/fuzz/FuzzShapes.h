@@ -23,7 +23,8 @@ inline std::string& Context()
 }
 
 /// With B2A_FUZZ_TRACE set in the environment, print how long each named step took (to find which
-/// call a slow input spends its time in); the step "decoded" also prints the decoded input.
+/// call a slow input spends its time in); the steps "shape" and "decoded" also print what was
+/// decoded so far.
 inline void Trace(const char* step)
 {
 	static const bool on = std::getenv("B2A_FUZZ_TRACE") != nullptr;
@@ -32,7 +33,7 @@ inline void Trace(const char* step)
 		return;
 	const auto now = std::chrono::steady_clock::now();
 	std::fprintf(stderr, "%10.3f ms  %s\n", std::chrono::duration<double, std::milli>(now - last).count(), step);
-	if (std::string(step) == "decoded")
+	if (std::string(step) == "decoded" || std::string(step) == "shape")
 		std::fprintf(stderr, "input: %s\n", Context().c_str());
 	last = std::chrono::steady_clock::now();
 }
@@ -78,9 +79,10 @@ inline ShapePtr DecodeUserShape(FuzzInput& in)
 		const double R = s * (1.0 + e * std::cos(k * std::atan2(x.y, x.x) + phi));
 		return Length(x) / R;
 	};
-	def.function = [=](Vec2 x, double L) { return std::pow(ratio(x), p) - L; };
+	auto level = [=](Vec2 x) { return std::pow(ratio(x), p); };
+	def.function = [=](Vec2 x, double L) { return level(x) - L; };
 	if (in.Bool())
-		def.levelOf = [=](Vec2 x) { return std::pow(ratio(x), p); };
+		def.levelOf = level;
 	if (in.Bool())
 	{
 		// ∂G/∂x = p·ρ^(p−1)·∇ρ, ρ = r/R(θ): ∇ρ = x/(rR) − r·R'(θ)/R²·∇θ, ∇θ = (−y, x)/r².
@@ -101,6 +103,11 @@ inline ShapePtr DecodeUserShape(FuzzInput& in)
 	def.lengthScale = in.Bool() ? s : in.LogUniform(0.05, 20.0);
 	if (in.Bool())
 		def.cornerAngles.push_back(in.Number(-kPi, kPi));
+	// Without levelOf every level is a root search in L, and the non-convex paths march along
+	// lines in hundreds of steps of those: a contact took 2 to 10 s (reported). Non-convex user
+	// shapes get their level function, so that the fuzzer measures robustness, not patience.
+	if (!def.levelOf && !def.convex && !def.smooth)
+		def.levelOf = level;
 	Context() += "user(s=" + FormatNumber(s) + " e=" + FormatNumber(e) + " k=" + std::to_string(k) + " phi=" +
 	             FormatNumber(phi) + " p=" + FormatNumber(p) + " level=" + FormatNumber(def.level) +
 	             (def.levelOf ? " levelOf" : "") + (def.gradient ? " gradient" : "") + (def.convex ? " convex" : "") +
