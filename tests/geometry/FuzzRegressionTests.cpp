@@ -137,7 +137,7 @@ TEST_CASE("fuzz regression: a superellipse whose powers leave double range is re
 	CHECK(MakeSuperellipse(1.0, 1.0, 1000.0, 1000.0)->Mass().area == doctest::Approx(4.0).epsilon(1e-2));
 }
 
-TEST_CASE("fuzz regression: a user shape's corner angle far outside [-pi, pi) is wrapped at once, not in steps of 2 pi")
+TEST_CASE("fuzz regression: a user shape's corner angle far outside -pi to pi is wrapped at once, not in steps of 2 pi")
 {
 	// Found by b2a_fuzz_solvers (a hang): a corner angle of 1e300 is finite, so UserShape took
 	// it, and the sampling wrapped it into [−π, π) by subtracting 2π until it got there, which
