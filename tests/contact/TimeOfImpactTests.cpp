@@ -178,6 +178,90 @@ TEST_CASE("time of impact: a miss, and particles already touching at t = 0")
 	}
 }
 
+TEST_CASE("time of impact: no contact is solved while the bounding circles are apart")
+{
+	// Found by the solver fuzzer: a bare user star (level by a root search per evaluation,
+	// declared convex though it is not, so every contact falls back to the min–max solver) racing
+	// away from an ellipse. Conservative advancement doubled its step with the growing gap and
+	// solved a contact at every step: the 200 steps took over two minutes. The bounding circles'
+	// centres move on straight lines, so the search now starts where they first overlap and ends
+	// where they part; this motion needs only the contact reported at tMax.
+	int calls = 0;
+	UserShapeDef star;
+	star.name = "bare star";
+	star.function = [&calls](Vec2 x, double L) {
+		++calls;
+		const double R = 2.0 * (1.0 + 0.9 * std::cos(8.0 * std::atan2(x.y, x.x) + 3.14159));
+		const double rho = Length(x) / R;
+		return rho * rho - L;
+	};
+	star.convex = star.smooth = true; // wrong on purpose
+	star.lengthScale = 2.0;
+	const ShapePtr a = MakeEllipse(0.05, 0.31), b = MakeUserShape(star);
+	const Move ma{Vec2(-52.2, 40.2), Vec2(3e3, -4e3), 0.1, 5.0}, mb{Vec2(0.2, -52.4), Vec2(-2e3, 7e3), -0.8, -3.0};
+	const double tMax = 1.7;
+	calls = 0;
+	(void)ComputeContact(*a, ma.ToMotion().At(tMax), *b, mb.ToMotion().At(tMax));
+	const int oneContact = calls;
+	calls = 0;
+	const TimeOfImpactResult r = TimeOfImpact(*a, ma.ToMotion(), *b, mb.ToMotion(), tMax);
+	REQUIRE(Succeeded(r));
+	CHECK_FALSE(r.hit);
+	CHECK(r.time == tMax);
+	CHECK(r.iterations == 1);
+	CHECK(calls == oneContact);
+
+	// Circles passing 1.6 apart when their radii add to 1.5 are never solved in between either,
+	// and when the circles do overlap for a while the search stays inside that window: the
+	// head-on pair below meets at the closed-form time (|d + w t| = 1.5 at t = (20 - 1.5)/4).
+	const auto c1 = MakeCircle(1.0), c2 = MakeCircle(0.5);
+	const TimeOfImpactResult pass = TimeOfImpact(*c1, Move{Vec2(-1e3, 0), Vec2(2, 0)}.ToMotion(), *c2,
+	                                             Move{Vec2(1e3, 1.6), Vec2(-2, 0)}.ToMotion(), 1e3);
+	REQUIRE(Succeeded(pass));
+	CHECK_FALSE(pass.hit);
+	CHECK(pass.iterations == 1);
+	const TimeOfImpactResult meet = TimeOfImpact(*c1, Move{Vec2(-10, 0), Vec2(2, 0)}.ToMotion(), *c2,
+	                                             Move{Vec2(10, 0), Vec2(-2, 0)}.ToMotion(), 100.0);
+	REQUIRE(Succeeded(meet));
+	CHECK(meet.hit);
+	CHECK(std::fabs(meet.time - 18.5 / 4.0) <= 1e-9 * 18.5 / 4.0);
+	CHECK(meet.iterations <= 4);
+
+	// A horizon far beyond the contact (the fuzzer's tMax of 1e291) changes nothing: the search
+	// probes and brackets near the time reached, and the time is exact relative to itself.
+	const TimeOfImpactResult far = TimeOfImpact(*c1, Move{Vec2(-10, 0), Vec2(2, 0)}.ToMotion(), *c2,
+	                                            Move{Vec2(10, 0.3), Vec2(-2, 0)}.ToMotion(), 1e291);
+	REQUIRE(Succeeded(far));
+	CHECK(far.hit);
+	const double tFar = (20.0 - std::sqrt(1.5 * 1.5 - 0.3 * 0.3)) / 4.0;
+	CHECK(std::fabs(far.time - tFar) <= 1e-9 * tFar);
+
+	// The same for a bare user disc, whose every level is a root search: the far horizon costs
+	// no more shape calls than a near one (it once probed the poses at t = 1e282).
+	UserShapeDef disc;
+	disc.name = "bare disc";
+	disc.function = [&calls](Vec2 x, double L) {
+		++calls;
+		return Length(x) - L;
+	};
+	disc.convex = disc.smooth = true;
+	const ShapePtr d1 = MakeUserShape(disc);
+	std::vector<double> times;
+	std::vector<int> cost;
+	for (const double horizon : {10.0, 1e291})
+	{
+		calls = 0;
+		const TimeOfImpactResult rd = TimeOfImpact(*d1, Move{Vec2(-10, 0), Vec2(2, 0)}.ToMotion(), *c2,
+		                                           Move{Vec2(10, 0.3), Vec2(-2, 0)}.ToMotion(), horizon);
+		REQUIRE(Succeeded(rd));
+		CHECK(rd.hit);
+		times.push_back(rd.time);
+		cost.push_back(calls);
+	}
+	CHECK(std::fabs(times[1] - tFar) <= 1e-8 * tFar);
+	CHECK(cost[1] <= cost[0] + cost[0] / 2);
+}
+
 TEST_CASE("time of impact: ellipses translating and turning, against bisection on the Perram-Wertheim level")
 {
 	struct Row { double aA, bA, aB, bB; Move a, b; double tMax; };

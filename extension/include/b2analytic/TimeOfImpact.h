@@ -21,7 +21,7 @@ struct Motion
 /// Options of the time-of-impact search.
 struct TimeOfImpactOptions
 {
-	double timeTolerance = 1e-13;  ///< bracket width at the end, relative to the interval
+	double timeTolerance = 1e-13;  ///< bracket width at the end, relative to the end of the bracket (at most tMax)
 	int maxIterations = 100000;    ///< cap on conservative-advancement steps
 	SolverOptions solver;          ///< options of the contact solves
 };
@@ -40,7 +40,9 @@ struct TimeOfImpactResult
 	bool Ok() const { return status != SolveStatus::failed; }
 };
 
-/// First time in [0, tMax] at which A and B touch, by conservative advancement: the distance
+/// First time in [0, tMax] at which A and B touch. The centres move on straight lines, so the
+/// search is confined to the interval in which the bounding circles overlap (none: no contact
+/// is solved but the one reported at tMax). Within it, by conservative advancement: the distance
 /// is bounded from below (by the gap of the supports along the current contact normal, which
 /// bounds the distance of the convex hulls, by the bounding circles, and, for non-convex
 /// shapes whose hulls overlap, by the distance of the sampled surfaces less their measured

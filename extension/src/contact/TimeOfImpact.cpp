@@ -46,6 +46,44 @@ std::vector<Vec2> WorldSamples(const Shape& s, const Pose& pose, int count)
 	return out;
 }
 
+// The centres move on straight lines (Motion::At), so the times at which the bounding circles
+// overlap form one interval [t0, t1]: with u = w/|w| the direction of the relative velocity
+// w = vB − vA and d = pB − pA, the centre distance along the path s = |w|·t is
+// |d + s·u|² = (s + d·u)² + h², h = |d × u|, which is ≤ R² for s within ±√(R² − h²) of −d·u.
+// Outside that interval the particles cannot touch; false when they never overlap. The squares
+// are never formed from d or w, so positions and speeds near the double range stay finite.
+bool CircleOverlapInterval(Vec2 d, Vec2 w, double R, double& t0, double& t1)
+{
+	const double dl = std::hypot(d.x, d.y);
+	const double wl = std::hypot(w.x, w.y);
+	if (!(wl > 0.0) || !std::isfinite(wl))
+	{
+		t0 = 0.0;
+		t1 = std::numeric_limits<double>::infinity();
+		return dl <= R; // no relative motion of the centres (or speeds beyond range: no filter)
+	}
+	const Vec2 u = w / wl;
+	const double h = std::fabs(Cross(d, u));
+	if (!(h < R))
+		return false;
+	const double half = std::sqrt((R - h) * (R + h));
+	const double s0 = -Dot(d, u) - half, s1 = -Dot(d, u) + half;
+	t0 = std::max(0.0, s0 / wl);
+	t1 = s1 / wl;
+	return t1 >= 0.0;
+}
+
+// No touch within [0, tMax]: the result reports the contact at the end.
+TimeOfImpactResult& Miss(TimeOfImpactResult& out, const ContactResult& end, double tMax)
+{
+	out.status = SolveStatus::converged;
+	out.iterations = std::max(out.iterations, 1);
+	out.hit = false;
+	out.time = tMax;
+	out.contact = end;
+	return out;
+}
+
 } // namespace
 
 TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb, double tMax,
@@ -87,7 +125,15 @@ TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b
 		return lb;
 	};
 
-	double t = 0.0;
+	// Skip the times at which the bounding circles are apart (margin for the radii's rounding): no
+	// contact is solved there, which matters when the particles race apart or pass far away.
+	const double R = (RA + RB) * (1.0 + 1e-9);
+	double t0 = 0.0, t1 = tMax;
+	if (!CircleOverlapInterval(mb.pose.p - ma.pose.p, mb.velocity - ma.velocity, R, t0, t1) || t0 > tMax)
+		return Miss(out, contactAt(tMax), tMax);
+	const double tEnd = std::min(tMax, t1);
+
+	double t = t0;
 	ContactResult c = contactAt(t);
 	for (int it = 0; it < options.maxIterations; ++it)
 	{
@@ -120,7 +166,9 @@ TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b
 		{
 			// Close: estimate when the separation reaches zero from its rate of change, and if a
 			// sign change is found there, finish with Brent's method on the separation.
-			const double dt = std::max(1e-9 * tMax, c.separation / rate);
+			// The difference step is scaled by the time reached, not by tMax: a far horizon
+			// (the fuzzer's tMax of 1e291) must not throw the probe out to absurd poses.
+			const double dt = std::max(c.separation / rate, 1e-9 * std::max(t, lb / rate));
 			const double slope = (contactAt(std::min(tMax, t + dt)).separation - c.separation) / dt;
 			if (slope < 0.0)
 			{
@@ -132,7 +180,7 @@ TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b
 					// Touching contacts have separation ≤ 0 and apart ones > 0 (ContactResult).
 					auto sep = [&](double s) { return contactAt(s).separation; };
 					const ScalarResult root = FindRootBrent(sep, t, hi, c.separation, chi.separation,
-					                                        options.timeTolerance * std::max(tMax, 1e-300), 200);
+					                                        options.timeTolerance * std::max(hi, 1e-300), 200);
 					out.iterations += root.iterations;
 					out.status = SolveStatus::converged;
 					out.hit = true;
@@ -141,7 +189,7 @@ TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b
 					ContactResult cr = contactAt(tr);
 					if (!cr.touching)
 					{
-						tr = std::min(hi, tr + options.timeTolerance * std::max(tMax, 1e-300));
+						tr = std::min(hi, tr + options.timeTolerance * std::max(hi, 1e-300));
 						cr = contactAt(tr);
 					}
 					out.time = tr;
@@ -151,7 +199,7 @@ TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b
 			}
 		}
 		const double next = t + lb / rate;
-		if (next > tMax)
+		if (next > tEnd)
 			break;
 		t = next;
 		c = contactAt(t);
@@ -161,11 +209,7 @@ TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b
 		out.failure = "conservative advancement reached its step cap";
 		return out;
 	}
-	out.status = SolveStatus::converged;
-	out.hit = false;
-	out.time = tMax;
-	out.contact = contactAt(tMax);
-	return out;
+	return Miss(out, contactAt(tMax), tMax);
 }
 
 } // namespace b2a
