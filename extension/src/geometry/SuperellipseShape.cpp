@@ -140,6 +140,19 @@ double SuperellipseShape::PowAbs(double t, double e, int k)
 	return r;
 }
 
+double SuperellipseShape::RootOf(double t, double e)
+{
+	// t^(1/e) for t ≥ 0: square roots for the exponents 2, 4 and 8 (ellipses and the blocky
+	// superellipses of the demos), pow otherwise.
+	if (e == 2.0)
+		return std::sqrt(t);
+	if (e == 4.0)
+		return std::sqrt(std::sqrt(t));
+	if (e == 8.0)
+		return std::sqrt(std::sqrt(std::sqrt(t)));
+	return std::pow(t, 1.0 / e);
+}
+
 double SuperellipseShape::Level(Vec2 x) const
 {
 	const double f = PowAbs(x.x / m_a, m_n, m_nInt) + PowAbs(x.y / m_b, m_m, m_mInt);
@@ -199,7 +212,7 @@ double SuperellipseShape::RadiusAt(Vec2 u, double level) const
 	const double A = PowAbs(u.x / m_a, m_n, m_nInt);
 	const double B = PowAbs(u.y / m_b, m_m, m_mInt);
 	if (m_n == m_m)
-		return std::pow(F / (A + B), 1.0 / m_n);
+		return RootOf(F / (A + B), m_n);
 	if (A == 0.0)
 		return std::pow(F / B, 1.0 / m_m);
 	if (B == 0.0)
@@ -234,6 +247,19 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 		if (p == 1.0)
 			return std::fabs(e.x) >= std::fabs(e.y) ? Vec2(m_a * Sign(e.x), 0.0) : Vec2(0.0, m_b * Sign(e.y));
 		// Hölder: X_i = sgn(e_i)|e_i|^{q−1} / ‖e‖_q^{q−1}, q = p/(p−1).
+		if (p == 2.0)
+		{
+			// q = 2: the unit ellipse's support is e/|e| (no pow; ellipses are the commonest).
+			const double norm = std::sqrt(e.x * e.x + e.y * e.y);
+			return Vec2(m_a * e.x / norm, m_b * e.y / norm);
+		}
+		if (p == 4.0)
+		{
+			// q = 4/3: |e_i|^{1/3} by cbrt, and ‖e‖_q^{1/3} = (Σ|e_i|^{4/3})^{1/4} by two roots.
+			const double px = std::cbrt(std::fabs(e.x)), py = std::cbrt(std::fabs(e.y));
+			const double norm = std::sqrt(std::sqrt(px * std::fabs(e.x) + py * std::fabs(e.y)));
+			return Vec2(m_a * Sign(e.x) * px / norm, m_b * Sign(e.y) * py / norm);
+		}
 		const double q = p / (p - 1.0);
 		const double px = std::pow(std::fabs(e.x), q - 1.0), py = std::pow(std::fabs(e.y), q - 1.0);
 		const double norm = std::pow(px * std::fabs(e.x) + py * std::fabs(e.y), (q - 1.0) / q);
