@@ -18,6 +18,7 @@
 #include <box2d/b2_polygon_shape.h>
 
 #include <map>
+#include <cstring>
 #include <mutex>
 #include <new>
 #include <type_traits>
@@ -157,6 +158,32 @@ void AnalyticContact::EvaluatePlain(b2Manifold* manifold, const b2Transform& xfA
 	}
 }
 
+namespace
+{
+bool SameTransform(const b2Transform& x, const b2Transform& y)
+{
+	return std::memcmp(&x, &y, sizeof(b2Transform)) == 0;
+}
+} // namespace
+
+AnalyticContact* AnalyticContact::FromAnalytic(b2Contact* contact)
+{
+	AnalyticContact* c = dynamic_cast<AnalyticContact*>(contact);
+	if (!c)
+		return nullptr;
+	const bool analyticA = AnalyticProxyShape::From(c->m_fixtureA->GetShape()) != nullptr;
+	const bool analyticB = c->m_kind != Kind::polygonCircle && AnalyticProxyShape::From(c->m_fixtureB->GetShape()) != nullptr;
+	return analyticA || analyticB ? c : nullptr;
+}
+
+void AnalyticContact::Prepare()
+{
+	m_preparedA = m_fixtureA->GetBody()->GetTransform();
+	m_preparedB = m_fixtureB->GetBody()->GetTransform();
+	EvaluateAnalytic(&m_preparedManifold, m_preparedA, m_preparedB);
+	m_prepared = true;
+}
+
 void AnalyticContact::Evaluate(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB)
 {
 	const b2Shape* sa = m_fixtureA->GetShape();
@@ -168,6 +195,24 @@ void AnalyticContact::Evaluate(b2Manifold* manifold, const b2Transform& xfA, con
 		EvaluatePlain(manifold, xfA, xfB);
 		return;
 	}
+	// A manifold prepared at these very transforms is what the evaluation below would give
+	// (Prepare ran it, warm start and patch cache included): use it once.
+	const bool prepared = m_prepared && SameTransform(xfA, m_preparedA) && SameTransform(xfB, m_preparedB);
+	m_prepared = false;
+	if (prepared)
+	{
+		*manifold = m_preparedManifold;
+		return;
+	}
+	EvaluateAnalytic(manifold, xfA, xfB);
+}
+
+void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB)
+{
+	const b2Shape* sa = m_fixtureA->GetShape();
+	const b2Shape* sb = m_fixtureB->GetShape();
+	const AnalyticProxyShape* pa = AnalyticProxyShape::From(sa);
+	const AnalyticProxyShape* pb = m_kind == Kind::polygonCircle ? nullptr : AnalyticProxyShape::From(sb);
 	manifold->pointCount = 0;
 	const Pose bodyA = ToPose(xfA), bodyB = ToPose(xfB);
 	ContactResult c;

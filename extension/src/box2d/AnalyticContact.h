@@ -31,6 +31,13 @@ public:
 
 	void Evaluate(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB) override;
 
+	/// The contact if `contact` is one of ours with an analytic fixture, else null.
+	static AnalyticContact* FromAnalytic(b2Contact* contact);
+	/// Computes the manifold at the bodies' current transforms and keeps it for the next
+	/// Evaluate at the same transforms (ParallelContacts.h). Touches only this contact and
+	/// read-only shared data, so different contacts may be prepared on different threads.
+	void Prepare();
+
 private:
 	AnalyticContact(b2Fixture* a, int32 indexA, b2Fixture* b, int32 indexB, Kind kind);
 	template <Kind kind>
@@ -39,6 +46,8 @@ private:
 
 	// The plain Box2D path, exactly as Box2D's own contact classes do it.
 	void EvaluatePlain(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB);
+	// The analytic path (at least one analytic fixture).
+	void EvaluateAnalytic(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB);
 
 	Kind m_kind;
 	WarmStart m_warm;       // Newton's previous solution (analytic pairs)
@@ -48,6 +57,10 @@ private:
 	// every member here must be trivially destructible: the circle is borrowed from a cache.
 	const Shape* m_circle = nullptr; // the analytic circle standing in for a Box2D circle fixture
 	ManifoldCache m_patch;  // where last step's flat patch ended
+	// A manifold computed ahead of the step (Prepare) and the transforms it belongs to.
+	bool m_prepared = false;
+	b2Transform m_preparedA, m_preparedB;
+	b2Manifold m_preparedManifold;
 };
 
 } // namespace b2a
