@@ -55,6 +55,11 @@ Options:
                        else 250)
   --steps N            steps in the timed window (default 200, quick 30)
   --scenes S,S         scenes to run: packing, hopper (default both)
+  --threads N,N        also run the analytic variant with its contacts computed on N threads
+                       before each step (b2a::PrepareContacts; variant analytic_<N>threads),
+                       e.g. --threads 2; the steps are bit-identical, so only time changes.
+                       Wall-clock time per step (preparation included) is what these
+                       save: wall_step_ms, and wall_speedup (analytic's over the variant's)
 Writes DIR/scenes.csv, DIR/scenes.md and DIR/summary.json, and DIR/<scene>_<N>_<variant>.svg
 pictures at the end of the window for the smallest count. Exits 1 if a particle was lost,
 left the container or became non-finite.
@@ -77,6 +82,7 @@ struct Run
 	double stepMedian = 0.0, stepMean = 0.0, collide = 0.0, solve = 0.0, broadphase = 0.0, solveTOI = 0.0; // ms
 	double collideMedian = 0.0, solveMedian = 0.0; // ms, robust against a busy machine's interruptions
 	double cpuMedian = 0.0; // ms of this thread's CPU time per step (median): blind to other processes' load
+	double wallMedian = 0.0; // ms of wall-clock time per step (median), contact preparation included
 	double bodies = 0.0;   // mean particles in the box over the window
 	double touching = 0.0; // mean touching contacts per particle over the window
 	double pairs = 0.0;    // mean Box2D contacts (fat AABBs overlapping: each evaluated every step) per particle
@@ -203,7 +209,7 @@ void Simulate(Run& run, bool picture, const std::string& out, Progress& progress
 	const auto start = std::chrono::steady_clock::now();
 	GranularScene scene(run.config);
 	b2World& world = scene.World();
-	std::vector<double> steps, collides, solves, cpu;
+	std::vector<double> steps, collides, solves, cpu, wall;
 	double sumStep = 0.0, sumCollide = 0.0, sumSolve = 0.0, sumBroadphase = 0.0, sumTOI = 0.0, sumBodies = 0.0, sumTouching = 0.0,
 	       sumPairs = 0.0;
 	const int total = run.windowStart + run.windowSteps;
@@ -212,12 +218,15 @@ void Simulate(Run& run, bool picture, const std::string& out, Progress& progress
 		if (s == run.openAt)
 			scene.OpenOutlet();
 		const double cpuBefore = ThreadCpuMilliseconds();
+		const auto wallBefore = std::chrono::steady_clock::now();
 		scene.Step();
+		const double wallStep = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallBefore).count();
 		const double cpuStep = ThreadCpuMilliseconds() - cpuBefore;
 		if (s >= run.windowStart)
 		{
 			const b2Profile& p = world.GetProfile();
 			cpu.push_back(cpuStep);
+			wall.push_back(wallStep);
 			steps.push_back(p.step);
 			collides.push_back(p.collide);
 			solves.push_back(p.solve);
@@ -240,6 +249,7 @@ void Simulate(Run& run, bool picture, const std::string& out, Progress& progress
 	run.collideMedian = Median(collides);
 	run.solveMedian = Median(solves);
 	run.cpuMedian = Median(cpu);
+	run.wallMedian = Median(wall);
 	run.stepMean = sumStep / n;
 	run.collide = sumCollide / n;
 	run.solve = sumSolve / n;
@@ -351,7 +361,12 @@ Pair FindPair(const std::vector<Run>& runs, const std::string& scene, int count)
 	Pair p;
 	for (const Run& r : runs)
 		if (r.scene == scene && r.count == count)
-			(r.variant == "analytic" ? p.analytic : p.polygon) = &r;
+		{
+			if (r.variant == "analytic")
+				p.analytic = &r;
+			else if (r.variant == "polygon8")
+				p.polygon = &r;
+		}
 	return p;
 }
 
@@ -367,12 +382,22 @@ double Growth(const std::vector<Run>& runs, const Run& run, double (Run::*cost)(
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_bench_scenes", kHelp, {"--counts", "--steps", "--scenes"});
+	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_bench_scenes", kHelp, {"--counts", "--steps", "--scenes", "--threads"});
 	const MachineInfo machine = GetMachineInfo();
 	Progress progress("b2a_bench_scenes");
 	const std::vector<int> counts = Counts(opt);
 	const int windowSteps = int(opt.Number("--steps", opt.quick ? 30 : 200, 1, 100000));
 	const std::vector<std::string> scenes = SceneNames(opt);
+	std::vector<int> threadCounts;
+	for (double t : opt.Numbers("--threads", {}, 2, 256))
+	{
+		if (t != std::floor(t))
+		{
+			std::fprintf(stderr, "b2a_bench_scenes: option '--threads': '%g' is not a whole number of threads\n", t);
+			return 2;
+		}
+		threadCounts.push_back(int(t));
+	}
 
 	// Every run planned first (for the progress fraction); analytic and polygon runs of a scene
 	// follow each other so that a change of load on the machine touches both alike.
@@ -390,6 +415,13 @@ int main(int argc, char** argv)
 			Schedule(run, GranularScene(run.config).PileHeight(), windowSteps);
 			run.variant = "analytic";
 			runs.push_back(run);
+			for (int t : threadCounts)
+			{
+				Run threaded = run;
+				threaded.variant = "analytic_" + std::to_string(t) + "threads";
+				threaded.config.threads = t;
+				runs.push_back(threaded);
+			}
 			run.variant = "polygon8";
 			run.config.polygonVertices = kPolygonVertices;
 			runs.push_back(run);
@@ -415,10 +447,11 @@ int main(int argc, char** argv)
 	               "collide_ms", "solve_ms", "broadphase_ms", "collide_median_ms", "solve_median_ms", "solve_toi_ms",
 	               "step_cpu_ms", "us_per_particle_step", "step_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8",
 	               "cpu_vs_polygon8", "growth_vs_smallest", "growth_cpu_vs_smallest", "particles_end", "discharged",
-	               "nonfinite", "escaped", "run_s"};
+	               "nonfinite", "escaped", "run_s", "threads", "wall_step_ms", "wall_vs_polygon8", "wall_speedup"};
 	Table md;
 	md.columns = {"scene", "N", "variant", "step ms", "collide ms", "solve ms (broadphase)", "TOI ms", "CPU ms",
-	              "µs/particle-step", "step × 8-gon", "collide × 8-gon", "CPU × 8-gon", "growth (CPU)", "contacts/particle"};
+	              "µs/particle-step", "step × 8-gon", "collide × 8-gon", "CPU × 8-gon", "growth (CPU)", "contacts/particle",
+	              "wall ms (speed-up)"};
 	Json runList = Json::array();
 	bool intact = true;
 	for (const Run& r : runs)
@@ -434,12 +467,14 @@ int main(int argc, char** argv)
 		                    F(r.collide / p.polygon->collide), F(r.solve / p.polygon->solve),
 		                    F(r.cpuMedian / p.polygon->cpuMedian), F(growth), F(growthCpu),
 		                    std::to_string(r.particlesEnd), std::to_string(r.discharged), std::to_string(r.nonFinite),
-		                    std::to_string(r.escaped), F(r.runSeconds, 3)});
+		                    std::to_string(r.escaped), F(r.runSeconds, 3), std::to_string(r.config.threads), F(r.wallMedian),
+		                    F(r.wallMedian / p.polygon->wallMedian), F(p.analytic->wallMedian / r.wallMedian)});
 		md.rows.push_back({r.scene, std::to_string(r.count), r.variant, F(r.stepMedian, 3), F(r.collide, 3),
 		                   F(r.solve, 3) + " (" + F(r.broadphase, 2) + ")", F(r.solveTOI, 2), F(r.cpuMedian, 3),
 		                   F(r.MicrosecondsPerParticleStep(), 3), F(r.stepMedian / p.polygon->stepMedian, 3),
 		                   F(r.collide / p.polygon->collide, 3), F(r.cpuMedian / p.polygon->cpuMedian, 3),
-		                   F(growth, 3) + " (" + F(growthCpu, 3) + ")", F(r.touching, 3)});
+		                   F(growth, 3) + " (" + F(growthCpu, 3) + ")", F(r.touching, 3),
+		                   F(r.wallMedian, 3) + " (" + F(p.analytic->wallMedian / r.wallMedian, 3) + ")"});
 		runList.push_back({{"scene", r.scene}, {"particle", r.particle}, {"count", r.count}, {"variant", r.variant},
 		                   {"box_width_mm", r.config.boxWidth}, {"outlet_mm", r.config.outletWidth},
 		                   {"outlet_opens_at_step", r.openAt}, {"window_start_step", r.windowStart},
@@ -452,7 +487,10 @@ int main(int argc, char** argv)
 		                   {"us_per_particle_step", r.MicrosecondsPerParticleStep()}, {"growth_vs_smallest", growth},
 		                   {"growth_cpu_vs_smallest", growthCpu},
 		                   {"particles_end", r.particlesEnd}, {"discharged", r.discharged}, {"nonfinite", r.nonFinite},
-		                   {"escaped", r.escaped}, {"fixtures_ok", r.fixturesOk}, {"intact", r.Intact()}, {"run_s", r.runSeconds}});
+		                   {"escaped", r.escaped}, {"fixtures_ok", r.fixturesOk}, {"intact", r.Intact()}, {"run_s", r.runSeconds},
+		                   {"threads", r.config.threads}, {"wall_step_ms", r.wallMedian},
+		                   {"wall_vs_polygon8", r.wallMedian / p.polygon->wallMedian},
+		                   {"wall_speedup", p.analytic->wallMedian / r.wallMedian}});
 	}
 	WriteText(opt.out + "/scenes.csv", csv.Csv());
 
@@ -496,7 +534,10 @@ int main(int argc, char** argv)
 	        "the 8-gons'. CPU ms: the median CPU time of the stepping thread (the profile is wall-clock time, which on "
 	        "a shared machine includes other processes' turns). growth: µs per particle-step over that at the smallest "
 	        "count (in brackets: from CPU time). contacts/particle: touching Box2D contacts (walls included) per "
-	        "particle.\n\n";
+	        "particle. wall ms: the median wall-clock time of a whole step, contact preparation included; `analytic_<N>threads` "
+	        "rows compute the analytic contacts on N threads before each step (b2a::PrepareContacts: the same steps, bit "
+	        "for bit; Box2D's profile and CPU ms then miss the helper threads' share), and the speed-up in brackets is "
+	        "the single-threaded analytic wall time over theirs.\n\n";
 	text += md.Markdown();
 	if (!target.is_null())
 		text += "\nHopper of " + std::to_string(targetCount) + " ellipses against the target (step ≤ " + F(kTargetStepRatio, 2) +

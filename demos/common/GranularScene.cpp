@@ -3,6 +3,8 @@
 
 #include "Svg.h"
 
+#include "b2analytic/ParallelContacts.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -213,7 +215,11 @@ Json GranularScene::SummaryHead(const std::string& demo, const DemoOptions& opti
 
 void GranularScene::Step()
 {
-	m_world->Step(float(m_config.dt), m_config.velocityIterations, m_config.positionIterations);
+	if (m_config.threads > 1)
+		StepWithPreparedContacts(m_world.get(), float(m_config.dt), m_config.velocityIterations, m_config.positionIterations,
+		                         m_config.threads);
+	else
+		m_world->Step(float(m_config.dt), m_config.velocityIterations, m_config.positionIterations);
 	m_time += m_config.dt;
 	++m_meterSteps;
 	// Particles that fell well below the outlet have left: count and remove them.

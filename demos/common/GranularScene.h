@@ -41,6 +41,9 @@ struct GranularConfig
 	/// with this many vertices on the same shape's surface (InscribedPolygon), the baseline the
 	/// benchmarks compare against; sizes, orientations and placement are the same.
 	int polygonVertices = 0;
+	/// Threads that compute the analytic contacts before each step (b2a::PrepareContacts);
+	/// 1: b2World::Step alone. Any count steps the scene bit-identically.
+	int threads = 1;
 };
 
 /// A Box2D polygon with `vertices` (3 to b2_maxPolygonVertices) points on the shape's own

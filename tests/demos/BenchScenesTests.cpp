@@ -33,13 +33,13 @@ int ExitStatus(const std::string& args)
 }
 } // namespace
 
-TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants and keeps every particle")
+TEST_CASE("b2a_bench_scenes: the quick run times both scenes in all three variants and keeps every particle")
 {
 	const std::string out = "demo_out/bench_scenes";
 	std::filesystem::remove_all(out);
 	std::filesystem::create_directories("demo_out");
 	const std::string cmd =
-		std::string("\"") + B2A_BENCH_SCENES + "\" --quick --out " + out + " > " + out + ".stdout 2> " + out + ".stderr";
+		std::string("\"") + B2A_BENCH_SCENES + "\" --quick --threads 2 --out " + out + " > " + out + ".stdout 2> " + out + ".stderr";
 	INFO("command: " << cmd);
 	REQUIRE(std::system(cmd.c_str()) == 0);
 
@@ -50,13 +50,14 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants an
 		"touching_contacts_per_particle", "contact_pairs_per_particle", "step_ms", "step_mean_ms", "collide_ms", "solve_ms",
 		"broadphase_ms", "collide_median_ms", "solve_median_ms", "solve_toi_ms", "step_cpu_ms", "us_per_particle_step",
 		"step_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8", "cpu_vs_polygon8", "growth_vs_smallest",
-		"growth_cpu_vs_smallest", "particles_end", "discharged", "nonfinite", "escaped", "run_s"};
+		"growth_cpu_vs_smallest", "particles_end", "discharged", "nonfinite", "escaped", "run_s", "threads", "wall_step_ms",
+		"wall_vs_polygon8", "wall_speedup"};
 	CHECK(header == columns);
 
 	// Quick: the smallest count only, each scene once per variant, in that order.
-	REQUIRE(rows.size() == 4);
-	const char* scenes[] = {"packing", "packing", "hopper", "hopper"};
-	const char* variants[] = {"analytic", "polygon8", "analytic", "polygon8"};
+	REQUIRE(rows.size() == 6);
+	const char* scenes[] = {"packing", "packing", "packing", "hopper", "hopper", "hopper"};
+	const char* variants[] = {"analytic", "analytic_2threads", "polygon8", "analytic", "analytic_2threads", "polygon8"};
 	std::map<std::string, double> polygonStep, polygonCollide, polygonCpu;
 	for (size_t i = 0; i < rows.size(); ++i)
 	{
@@ -70,7 +71,8 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants an
 		                      "contact_pairs_per_particle", "step_ms", "step_mean_ms", "collide_ms", "solve_ms", "broadphase_ms",
 		                      "collide_median_ms", "solve_median_ms", "solve_toi_ms", "step_cpu_ms", "us_per_particle_step",
 		                      "step_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8", "cpu_vs_polygon8",
-		                      "growth_vs_smallest", "growth_cpu_vs_smallest", "run_s"})
+		                      "growth_vs_smallest", "growth_cpu_vs_smallest", "run_s", "threads", "wall_step_ms", "wall_vs_polygon8",
+		                      "wall_speedup"})
 		{
 			CAPTURE(c);
 			const double v = Number(r, c);
@@ -78,6 +80,7 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants an
 			CHECK(v > 0.0);
 		}
 		CHECK(Number(r, "window_steps") == 30);
+		CHECK(Number(r, "threads") == (r.at("variant") == "analytic_2threads" ? 2 : 1));
 		// The particles: none lost or made up, none non-finite, none outside the container.
 		CHECK(Number(r, "particles_end") == count);
 		CHECK(Number(r, "nonfinite") == 0);
@@ -103,18 +106,33 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in both variants an
 		}
 	}
 	// Ratios: the analytic time over the polygon time of the same scene (4 significant digits).
-	for (size_t i = 0; i < rows.size(); i += 2)
+	for (size_t i = 0; i < rows.size(); ++i)
 	{
 		const Row& r = rows[i];
+		if (r.at("variant") == "polygon8")
+			continue;
 		const std::string scene = r.at("scene");
 		CHECK(Number(r, "step_vs_polygon8") == doctest::Approx(Number(r, "step_ms") / polygonStep[scene]).epsilon(2e-3));
 		CHECK(Number(r, "collide_vs_polygon8") == doctest::Approx(Number(r, "collide_ms") / polygonCollide[scene]).epsilon(2e-3));
 		CHECK(Number(r, "cpu_vs_polygon8") == doctest::Approx(Number(r, "step_cpu_ms") / polygonCpu[scene]).epsilon(2e-3));
 	}
-	// Both variants of a scene run the same steps of the same container.
-	CHECK(rows[0].at("window_start_step") == rows[1].at("window_start_step"));
-	CHECK(rows[2].at("window_start_step") == rows[3].at("window_start_step"));
-	CHECK(Number(rows[2], "outlet_mm") > 0.0); // the hopper has an outlet, the packing box none
+	// All variants of a scene run the same steps of the same container.
+	for (size_t i : {0, 3})
+	{
+		CHECK(rows[i].at("window_start_step") == rows[i + 1].at("window_start_step"));
+		CHECK(rows[i].at("window_start_step") == rows[i + 2].at("window_start_step"));
+		// Contacts prepared on two threads step bit-identically: the same particles in the box,
+		// the same discharge and the same contacts over the window, to every printed digit.
+		for (const char* c : {"bodies", "touching_contacts_per_particle", "contact_pairs_per_particle", "particles_end", "discharged"})
+		{
+			CAPTURE(c);
+			CHECK(rows[i].at(c) == rows[i + 1].at(c));
+		}
+		CHECK(Number(rows[i], "wall_speedup") == 1.0);
+		CHECK(Number(rows[i + 1], "wall_speedup") ==
+		      doctest::Approx(Number(rows[i], "wall_step_ms") / Number(rows[i + 1], "wall_step_ms")).epsilon(2e-3));
+	}
+	CHECK(Number(rows[3], "outlet_mm") > 0.0); // the hopper has an outlet, the packing box none
 	CHECK(Number(rows[0], "outlet_mm") == 0.0);
 
 	std::ifstream f(out + "/summary.json");
@@ -148,6 +166,8 @@ TEST_CASE("b2a_bench_scenes rejects bad options with exit status 2")
 	CHECK(ExitStatus("--counts 12.5 --out demo_out/bench_scenes_bad") == 2);
 	CHECK(ExitStatus("--scenes packing,bogus --out demo_out/bench_scenes_bad") == 2);
 	CHECK(ExitStatus("--steps 0 --out demo_out/bench_scenes_bad") == 2);
+	CHECK(ExitStatus("--threads 1 --out demo_out/bench_scenes_bad") == 2);   // 1 thread is the analytic variant
+	CHECK(ExitStatus("--threads 2.5 --out demo_out/bench_scenes_bad") == 2);
 	CHECK(ExitStatus("--help") == 0);
 }
 
