@@ -130,10 +130,14 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 		const double w3 = 1.0 / (p.A.psi * p.A.psi + p.B.psi * p.B.psi + 1e-300);
 		auto merit = [&](const NewtonPoint& q) { return w12 * (q.r[0] * q.r[0] + q.r[1] * q.r[1]) + w3 * q.r[2] * q.r[2]; };
 		const double merit0 = merit(p);
+		// At the rounding floor (a residual that the stall test below accepts) a step that does
+		// not lower the merit at once or after two halvings will not at all: forty halvings
+		// there cost forty evaluations for nothing (0.9 % of a hopper's solves did that).
+		const int halvings = p.relative < 1e-9 ? 3 : 40;
 		double alpha = 1.0;
 		NewtonPoint next;
 		bool accepted = false;
-		for (int k = 0; k < 40; ++k, alpha *= 0.5)
+		for (int k = 0; k < halvings; ++k, alpha *= 0.5)
 		{
 			next = Evaluate(f, p.xi + alpha * Vec2(delta[0], delta[1]), p.m + alpha * delta[2]);
 			if (next.finite && merit(next) <= (1.0 - 1e-4 * alpha) * merit0)
