@@ -274,3 +274,61 @@ TEST_CASE("superellipse: an exponent of 1 makes corners on the axes, reported by
 	CHECK(MakeSuperellipse(1.3, 0.6, 1.5, 3.0)->CornerAngles().empty());
 	CHECK(MakeEllipse(1.3, 0.6)->CornerAngles().empty());
 }
+
+TEST_CASE("superellipse: the ellipse's far crossing of a line is the larger root, against long double bisection")
+{
+	// Reference: the line's crossings of λ = 1 found by bisection of λ(x + t·d) − 1 in long
+	// double between the line's point nearest the centre (inside when the line hits) and far
+	// beyond; the closed form must give the far one to 1e-13 of the size, and its point must lie
+	// on the surface. Lines from inside, outside, tangent-near and missing are all drawn.
+	const std::shared_ptr<const Shape> ellipses[] = {MakeCircle(1.7), MakeEllipse(3.0, 0.8), MakeEllipse(0.1, 100.0),
+	                                                 SuperellipseShape::FromZeta(2.0, 1.0, 1.0)};
+	Random rng(77);
+	for (const auto& s : ellipses)
+	{
+		CAPTURE(s->Describe());
+		const auto* se = dynamic_cast<const SuperellipseShape*>(s.get());
+		REQUIRE(se != nullptr);
+		const long double a = se->A(), b = se->B();
+		auto level = [&](long double x, long double y) { return (x / a) * (x / a) + (y / b) * (y / b); };
+		int hits = 0, misses = 0;
+		for (int i = 0; i < 400; ++i)
+		{
+			const Vec2 x = rng.Uniform(0.0, 2.0) * Vec2(se->A() * std::cos(rng.Angle()), se->B() * std::sin(rng.Angle()));
+			const Vec2 d = rng.LogUniform(1e-2, 1e2) * Rotate(Rot(rng.Angle()), Vec2(1, 0));
+			CAPTURE(x.x);
+			CAPTURE(x.y);
+			CAPTURE(d.x);
+			CAPTURE(d.y);
+			// The line's point nearest the centre in the scaled frame: the quadratic's vertex.
+			const long double D = d.x / a, E = d.y / b, X = x.x / a, Y = x.y / b;
+			const long double tv = -(X * D + Y * E) / (D * D + E * E);
+			const bool meets = level(x.x + tv * d.x, x.y + tv * d.y) < 1.0L;
+			double t = 0.0;
+			const bool found = s->FarCrossing(x, d, t);
+			if (!meets)
+			{
+				++misses;
+				CHECK_FALSE(found);
+				continue;
+			}
+			++hits;
+			REQUIRE(found);
+			long double lo = tv, hi = tv + 4.0L * std::max(a, b) / std::sqrt((long double)(d.x * d.x + d.y * d.y)) + 1.0L;
+			for (int k = 0; k < 200; ++k)
+			{
+				const long double mid = 0.5L * (lo + hi);
+				(level(x.x + mid * d.x, x.y + mid * d.y) < 1.0L ? lo : hi) = mid;
+			}
+			const double size = std::max(se->A(), se->B());
+			CHECK(std::fabs(double(lo - t)) * Length(d) <= 1e-13 * size);
+			CHECK(RelativeError(s->Level(x + t * d), 1.0) < 1e-12);
+		}
+		CHECK(hits > 100);
+		CHECK(misses > 10);
+	}
+	// Other exponents have no closed form: the contact code searches instead.
+	double t = 0.0;
+	CHECK_FALSE(MakeSuperellipse(1.0, 0.5, 4.0, 4.0)->FarCrossing(Vec2(0.1, 0.0), Vec2(1.0, 0.0), t));
+	CHECK_FALSE(MakeHeart(1.0)->FarCrossing(Vec2(0.1, 0.0), Vec2(1.0, 0.0), t));
+}

@@ -128,6 +128,17 @@ public:
 	/// Body point on the own surface at polar angle θ.
 	Vec2 SurfacePoint(double theta) const { return SurfacePoint(theta, m_surfaceLevel); }
 
+	/// Closed form, where the shape has one, of the far crossing of the own surface by the body
+	/// line x + t·d: the largest t with the point on the surface. Returns false when the shape
+	/// has no closed form or the line misses the surface; the contact code then searches.
+	virtual bool FarCrossing(Vec2 x, Vec2 d, double& t) const
+	{
+		(void)x;
+		(void)d;
+		(void)t;
+		return false;
+	}
+
 	/// Support point in the body frame: the point of the particle farthest along d
 	/// (for a non-convex shape, the support point of its convex hull). d need not be unit.
 	virtual Vec2 Support(Vec2 d) const;

@@ -35,6 +35,8 @@ public:
 	Vec2 Gradient(Vec2 x) const override;
 	double RadiusAt(Vec2 u, double level) const override;
 	Vec2 Support(Vec2 d) const override;
+	/// The ellipse's (n = m = 2) far crossing: the larger root of a quadratic.
+	bool FarCrossing(Vec2 x, Vec2 d, double& t) const override;
 
 	/// Semi-axis along body x.
 	double A() const { return m_a; }

@@ -201,7 +201,7 @@ ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, c
 		if (s.IsConvex())
 		{
 			double t = 0.0;
-			if (ConvexLineExtreme(s, ps, X, dir, level - own, reach, t))
+			if (s.FarCrossing(x, InvRotate(ps.q, dir), t) || ConvexLineExtreme(s, ps, X, dir, level - own, reach, t))
 				return X + t * dir;
 		}
 		if (inside || !s.IsConvex())

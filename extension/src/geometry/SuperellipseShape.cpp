@@ -233,6 +233,24 @@ double SuperellipseShape::RadiusAt(Vec2 u, double level) const
 	return std::exp(s);
 }
 
+bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
+{
+	if (m_n != 2.0 || m_m != 2.0)
+		return false;
+	// (X + t·D)² + (Y + t·E)² = 1 with X = x/a, D = dx/a, Y = y/b, E = dy/b (the own level is 1
+	// in both forms: f^(1/ζ) = 1 where f = 1): A t² + 2 B t + C = 0, A = D² + E², B = X D + Y E,
+	// C = X² + Y² − 1. The larger root (−B + √(B² − A C))/A; where B > 0 it cancels, so it is
+	// computed as −C/(B + √(B² − A C)) there (the product of the roots is C/A).
+	const double X = x.x / m_a, Y = x.y / m_b, D = d.x / m_a, E = d.y / m_b;
+	const double A = D * D + E * E, B = X * D + Y * E, C = (X * X + Y * Y) - 1.0;
+	const double disc = B * B - A * C;
+	if (!(A > 0.0) || !(disc >= 0.0) || !std::isfinite(disc))
+		return false;
+	const double root = std::sqrt(disc);
+	t = B > 0.0 ? -C / (B + root) : (root - B) / A;
+	return std::isfinite(t);
+}
+
 Vec2 SuperellipseShape::Support(Vec2 d) const
 {
 	// In scaled coordinates X = x/a, Y = y/b the support of the unit p-ball along e = (a·dx, b·dy).
