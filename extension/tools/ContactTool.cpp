@@ -276,7 +276,8 @@ Modes:
            unscaled surfaces on the line through point along the normal, separation along
            the normal (negative when overlapping), scale the level value of the method used.
            Methods: auto (per shape pair), newton, grid (run both ways).
-method in the answer: closed_form, newton, min_max, grid or overlap_axis (coincident centres).
+method in the answer: closed_form, ellipse_pair (two ellipses), newton, min_max, grid or overlap_axis
+(coincident centres).
 
 Exit status: 0 when every line was answered "ok", 1 when some line got an error,
 2 when the input cannot be read or the arguments are wrong.

@@ -25,7 +25,8 @@ enum class SolveMethod : std::uint8_t
 	minMax,     ///< the min–max (Perram–Wertheim) characterisation C = max_μ min_X ψA + μψB
 	grid,       ///< the grid method on surface samples with local refinement (paper section 3)
 	overlapAxis,   ///< coincident centres: the axis of least overlap (no level point exists)
-	separatingAxis ///< analytic shape against a polygon: the best separating axis of the supports
+	separatingAxis, ///< analytic shape against a polygon: the best separating axis of the supports
+	ellipsePair     ///< two ellipses: Newton on Perram and Wertheim's one-dimensional form (2×2 algebra)
 };
 
 /// Which solver the caller wants.

@@ -3,6 +3,7 @@
 
 #include "contact/ResultChecks.h"
 #include "contact/SolverCore.h"
+#include "b2analytic/SuperellipseShape.h"
 
 #include <cmath>
 
@@ -29,6 +30,7 @@ const char* MethodName(SolveMethod method)
 	case SolveMethod::grid: return "grid";
 	case SolveMethod::overlapAxis: return "overlap_axis";
 	case SolveMethod::separatingAxis: return "separating_axis";
+	case SolveMethod::ellipsePair: return "ellipse_pair";
 	default: return "none";
 	}
 }
@@ -83,9 +85,15 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 		r = SolveCommonLevelGrid(a, pa, b, pb, options);
 		break;
 	default:
+		const SuperellipseShape* ea = AsPlainEllipse(a);
+		const SuperellipseShape* eb = ea ? AsPlainEllipse(b) : nullptr;
 		if (a.Family() == ShapeFamily::circle && b.Family() == ShapeFamily::circle)
 		{
 			r = CircleLevel(a, pa, b, pb);
+		}
+		else if (ea && eb && (r = SolveEllipsePairLevel(*ea, pa, *eb, pb, warm)).Ok())
+		{
+			// two ellipses: solved without the generic solvers
 		}
 		else if (smooth)
 		{

@@ -17,6 +17,14 @@ inline bool NewtonApplies(const Shape& a, const Shape& b, LevelResult& failure)
 	return false;
 }
 
+class SuperellipseShape;
+/// The shape as a plain ellipse or circle (n = m = 2, level f or f^1), else null.
+const SuperellipseShape* AsPlainEllipse(const Shape& s);
+/// Common level of two plain ellipses by Newton on Perram–Wertheim's one-dimensional form
+/// (EllipsePairLevel.cpp), warm-started from the previous multiplier.
+LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                                  const WarmStart* warm);
+
 /// Newton–Raphson on the common level from (ξ, m = log μ) in a PairFrame; `level` is λA there.
 LevelResult RunNewton(const PairFrame& frame, Vec2 xi, double m, const SolverOptions& options);
 
