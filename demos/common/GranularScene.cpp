@@ -210,6 +210,7 @@ Json GranularScene::SummaryHead(const std::string& demo, const DemoOptions& opti
 		j["particle"]["box2d_polygon_vertices"] = c.polygonVertices;
 	j["box_width_mm"] = c.boxWidth;
 	j["time_step_s"] = c.dt;
+	j["contact_threads"] = c.threads;
 	return j;
 }
 

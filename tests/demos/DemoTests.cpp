@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <sys/wait.h>
@@ -84,6 +85,22 @@ TEST_CASE("b2a_demo_hopper: the quick discharge counts every particle and the pa
 		CHECK(s["over_outlet"].get<int>() > 0);
 	for (const char* f : {"discharge.csv", "discharge.svg", "snapshot_0.000.svg", "snapshot_final.svg"})
 		CHECK(Exists(std::string("demo_out/hopper/") + f));
+
+	// With the contacts prepared on two threads the run is the same, bit for bit: every field
+	// of the summary but the run time and the thread count, and the discharge curve.
+	json t = RunDemo(B2A_DEMO_HOPPER, "hopper_threads", "--threads 2");
+	CHECK(t["contact_threads"] == 2);
+	CHECK(s["contact_threads"] == 1);
+	json a = s;
+	for (json* j : {&a, &t})
+		for (const char* key : {"run_time_s", "contact_threads"})
+			j->erase(key);
+	CHECK(a == t);
+	auto read = [](const std::string& path) {
+		std::ifstream f(path);
+		return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+	};
+	CHECK(read("demo_out/hopper/discharge.csv") == read("demo_out/hopper_threads/discharge.csv"));
 }
 
 TEST_CASE("b2a_demo_collision: fixed stepping finds the first contact within one step after the exact time")
@@ -135,5 +152,7 @@ TEST_CASE("demos reject bad options with a message and exit status 2")
 	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --particles many > /dev/null 2>&1").c_str())) == 2);
 	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --bogus > /dev/null 2>&1").c_str())) == 2);
 	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --outlet-widths 40 > /dev/null 2>&1").c_str())) == 2);
+	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --threads 1.5 > /dev/null 2>&1").c_str())) == 2);
+	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --threads 0 > /dev/null 2>&1").c_str())) == 2);
 	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --help > /dev/null 2>&1").c_str())) == 0);
 }
