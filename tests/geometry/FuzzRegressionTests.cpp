@@ -155,3 +155,47 @@ TEST_CASE("fuzz regression: a user shape's corner angle far outside -pi to pi is
 		CHECK(samples->angle.back() < kPi);
 	}
 }
+
+TEST_CASE("fuzz regression: a user shape whose surface lies far from its lengthScale is refused at once, naming lengthScale")
+{
+	// Found by the world fuzzer: a bare user star (G = (r / (s·R(θ)))⁴ − L, no level function)
+	// with the own level L₀ = 8.2e-308, so its surface lies about 1e-78 from the centre while
+	// lengthScale says 0.05. Every level was a 300-step root search down to 1e-308 and the
+	// radial searches, scaled by lengthScale, could not resolve the surface (radii 1e31 too
+	// large): building it took 397 million calls of G, 40 s. It is now refused by name after a
+	// few radial searches. The surface must lie within a factor 1e6 of lengthScale.
+	long calls = 0;
+	auto star = [&calls](double level, double lengthScale) {
+		UserShapeDef def;
+		def.name = "star";
+		def.function = [&calls](Vec2 x, double L) {
+			++calls;
+			const double R = 0.10573833471337006 * (1.0 + 0.0082536049439230954 * std::cos(std::atan2(x.y, x.x) - kPi));
+			return std::pow(Length(x) / R, 4.0) - L;
+		};
+		def.convex = true;
+		def.levelPower = 2.0;
+		def.level = level;
+		def.lengthScale = lengthScale;
+		return MakeUserShape(def);
+	};
+	std::string message, field;
+	try
+	{
+		star(8.2049599694237439e-308, 0.050922648391717042);
+	}
+	catch (const InvalidParameter& e)
+	{
+		message = e.what();
+		field = e.Field();
+	}
+	CAPTURE(message);
+	CHECK(field == "lengthScale");
+	CHECK(message.find("user shape 'star'") != std::string::npos);
+	CHECK(calls < 20000);
+	// Too large a lengthScale for an ordinary level is refused the same way; a fitting one
+	// builds the particle, whose bounding radius at L = 1 is the largest R(θ), s·(1 + e) at θ = π.
+	CHECK_THROWS_AS(star(1.0, 1e6), InvalidParameter);
+	const ShapePtr fine = star(1.0, 0.1);
+	CHECK(fine->BoundingRadius() == doctest::Approx(0.10573833471337006 * (1.0 + 0.0082536049439230954)).epsilon(1e-9));
+}

@@ -45,6 +45,23 @@ UserShape::UserShape(UserShapeDef def)
 	}
 	for (double c : m_def.cornerAngles)
 		AddCorner(c);
+	// The solvers' steps and tolerances, and the radial searches that build the samples and
+	// the mass, scale with lengthScale. A surface far from it (the fuzzer's own level 8e-308
+	// put the surface 1e-78 from the centre with lengthScale 0.05) cannot be resolved: the
+	// radii came out 1e31 too large, and building the shape took 40 s of level searches. So
+	// the surface along the axes must lie within a factor 1e6 of lengthScale.
+	for (const Vec2 u : {Vec2(1.0, 0.0), Vec2(0.0, 1.0), Vec2(-1.0, 0.0), Vec2(0.0, -1.0)})
+	{
+		const double r = RadiusAt(u, m_def.level);
+		// (No surface on the ray at all, an unbounded particle, is the function's fault: Finalize
+		// says so.)
+		if (std::isfinite(r) && !(r >= 1e-6 * m_def.lengthScale && r <= 1e6 * m_def.lengthScale))
+			throw InvalidParameter(who, "lengthScale",
+			                       "must be within a factor 1e6 of the particle's size (the radial search along (" +
+			                           FormatNumber(u.x) + ", " + FormatNumber(u.y) + ") put the surface at the level " +
+			                           FormatNumber(m_def.level) + " " + FormatNumber(r) + " from the centre)",
+			                       m_def.lengthScale);
+	}
 	Finalize(-1.0, nullptr);
 }
 
