@@ -199,3 +199,40 @@ TEST_CASE("fuzz regression: a user shape whose surface lies far from its lengthS
 	const ShapePtr fine = star(1.0, 0.1);
 	CHECK(fine->BoundingRadius() == doctest::Approx(0.10573833471337006 * (1.0 + 0.0082536049439230954)).epsilon(1e-9));
 }
+
+TEST_CASE("fuzz regression: levels and radii of a bare user shape far above or below its own level take tens of calls, not thousands")
+{
+	// Found by the solver fuzzer: the grid method with B held at a level 1e300 times its own,
+	// B a bare user disc (G = |x|/s − L, level by a root search in L). Its radial searches
+	// doubled their way out to 1e300 and each level inside them doubled its bracket as far, a
+	// thousand steps each: a minute for one call. Brackets now grow by squaring factors and the
+	// roots are narrowed on a logarithmic scale. Reference: the closed form λ = |x|/s.
+	long calls = 0;
+	const double s = 0.55447708743484103;
+	UserShapeDef def;
+	def.name = "bare disc";
+	def.function = [&calls, s](Vec2 x, double L) {
+		++calls;
+		return Length(x) / s - L;
+	};
+	def.convex = true;
+	def.level = 0.2;
+	def.lengthScale = 5.9226790622878562;
+	const ShapePtr disc = MakeUserShape(def);
+	for (const double r : {1e250, 1e30, 3.0, 1e-30, 1e-280})
+	{
+		CAPTURE(r);
+		calls = 0;
+		const double level = disc->Level(Vec2(0.6 * r, -0.8 * r));
+		CHECK(level == doctest::Approx(r / s).epsilon(1e-12));
+		CHECK(calls < 200);
+	}
+	for (const double level : {1e200, 1e-200})
+	{
+		CAPTURE(level);
+		calls = 0;
+		const double radius = disc->RadiusAt(Vec2(0.6, 0.8), level);
+		CHECK(radius == doctest::Approx(level * s).epsilon(1e-10));
+		CHECK(calls < 20000);
+	}
+}

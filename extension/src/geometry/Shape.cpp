@@ -65,13 +65,18 @@ double Shape::RadiusAt(Vec2 u, double level) const
 	double lo = 0.0, flo = f0;
 	double hi = m_boundingRadius > 0.0 ? m_boundingRadius : LengthHint();
 	double fhi = phi(hi);
+	// Grow by a factor that squares each time (2, 4, 16, ... up to 1e8): a surface far out (a
+	// level far above the own one) is bracketed in tens of steps, and the root search below
+	// narrows the wide bracket on a logarithmic scale.
+	double factor = 2.0;
 	for (int i = 0; i < 2000 && !(fhi >= 0.0); ++i)
 	{
 		if (std::isnan(fhi) || fhi == -std::numeric_limits<double>::infinity())
 			return std::numeric_limits<double>::quiet_NaN(); // no surface along this ray
 		lo = hi;
 		flo = fhi;
-		hi *= 2.0;
+		hi *= factor;
+		factor = std::min(factor * factor, 1e8);
 		fhi = phi(hi);
 	}
 	if (!(fhi >= 0.0))
@@ -87,7 +92,7 @@ double Shape::RadiusAt(Vec2 u, double level) const
 			else { hi = mid; fhi = fm; }
 		}
 	}
-	const ScalarResult r = FindRootBrent(phi, lo, hi, flo, fhi, 0.0, 300);
+	const ScalarResult r = FindRootScaleFree(phi, lo, hi, flo, fhi, 300);
 	return r.x;
 }
 

@@ -83,7 +83,11 @@ double UserShape::Level(Vec2 x) const
 	if (std::isnan(g0))
 		return std::numeric_limits<double>::quiet_NaN();
 	const double dir = g0 > 0.0 ? 1.0 : -1.0; // outside: the level must grow
-	double step = std::max(std::fabs(L0), 1.0) * 0.25;
+	// The step grows by a factor that squares each time (2, 4, 16, 256, ... up to 1e8), so a
+	// level 1e300 away is bracketed in about 45 evaluations, not a thousand doublings (found by
+	// the solver fuzzer: a grid contact with B held at level 1e300 took a minute); the root
+	// search then narrows the wide bracket on a logarithmic scale.
+	double step = std::max(std::fabs(L0), 1.0) * 0.25, factor = 2.0;
 	double a = L0, ga = g0, b = L0, gb = g0;
 	for (int i = 0; i < 1100; ++i)
 	{
@@ -95,13 +99,14 @@ double UserShape::Level(Vec2 x) const
 			break;
 		a = b;
 		ga = gb;
-		step *= 2.0;
+		step *= factor;
+		factor = std::min(factor * factor, 1e8);
 		if (!std::isfinite(step))
 			return dir * std::numeric_limits<double>::infinity();
 	}
 	if ((gb > 0.0) == (g0 > 0.0) && gb != 0.0)
 		return dir * std::numeric_limits<double>::infinity();
-	return FindRootBrent(g, a, b, ga, gb, 0.0, 300).x;
+	return FindRootScaleFree(g, a, b, ga, gb, 300).x;
 }
 
 bool UserShape::ImplicitUsable(Vec2 x, double lambda, double agreement) const

@@ -96,6 +96,89 @@ ScalarResult FindRootBrent(F&& f, double a, double b, double fa, double fb, doub
 	return r;
 }
 
+/// A root of f between a and b (f(a), f(b) of opposite signs) where the root may lie many orders
+/// of magnitude closer to zero than the bracket's far end (a level of 1e-300 bracketed by
+/// [-0.05, 0.2], a radius of 1e-78 by [0, 6]). Brent's method only halves such a bracket per
+/// step once it cannot interpolate, and to reach 1e-300 at full relative precision it would need
+/// a thousand halvings (it stops at its cap, after hundreds of evaluations). So the bracket is
+/// first narrowed on a logarithmic scale: a bracket across zero is split at zero; from an end at
+/// zero the far end is scaled by 4^(-2^k) (1/4, 1/16, 1/256, ...) until f changes sign; then
+/// bisection at the geometric mean √(lo·hi) until the ends are within a factor 4. About
+/// log2(log2(range)) + 2 evaluations, then Brent's method on an ordinary bracket.
+template <class F>
+ScalarResult FindRootScaleFree(F&& f, double a, double b, double fa, double fb, int maxIter = 300)
+{
+	if (!(std::isfinite(fa) && std::isfinite(fb)) || fa == 0.0 || fb == 0.0 || (fa > 0.0) == (fb > 0.0) ||
+	    !(std::isfinite(a) && std::isfinite(b)))
+		return FindRootBrent(f, a, b, fa, fb, 0.0, maxIter);
+	double lo = a, hi = b, flo = fa, fhi = fb;
+	if (lo > hi)
+	{
+		std::swap(lo, hi);
+		std::swap(flo, fhi);
+	}
+	int used = 0;
+	auto done = [&](double x, double fx) {
+		ScalarResult r;
+		r.x = x;
+		r.fx = fx;
+		r.iterations = used;
+		r.converged = true;
+		return r;
+	};
+	if (lo < 0.0 && hi > 0.0)
+	{
+		const double f0 = f(0.0);
+		++used;
+		if (f0 == 0.0 || !std::isfinite(f0))
+			return f0 == 0.0 ? done(0.0, 0.0) : FindRootBrent(f, lo, hi, flo, fhi, 0.0, maxIter);
+		if ((f0 > 0.0) == (flo > 0.0)) { lo = 0.0; flo = f0; }
+		else { hi = 0.0; fhi = f0; }
+	}
+	// On [lo, hi] within one side of zero; mirror the negative side onto the positive one.
+	const bool negative = hi <= 0.0;
+	double n = negative ? -hi : lo, far = negative ? -lo : hi, fn = negative ? fhi : flo, ffar = negative ? flo : fhi;
+	auto g = [&](double x) { return f(negative ? -x : x); };
+	if (n == 0.0)
+	{
+		// Probe towards zero, squaring the ratio each time, until g changes sign.
+		double ratio = 0.25;
+		for (int k = 0; k < 11; ++k, ratio *= ratio)
+		{
+			const double t = far * ratio;
+			if (!(t > 1e-300))
+				break;
+			const double ft = g(t);
+			++used;
+			if (ft == 0.0 || !std::isfinite(ft))
+			{
+				if (ft == 0.0)
+					return done(negative ? -t : t, 0.0);
+				break;
+			}
+			if ((ft > 0.0) == (fn > 0.0)) { n = t; fn = ft; break; }
+			far = t;
+			ffar = ft;
+		}
+	}
+	while (n > 0.0 && far > 4.0 * n && used < maxIter / 2)
+	{
+		const double m = std::sqrt(n) * std::sqrt(far);
+		const double fm = g(m);
+		++used;
+		if (fm == 0.0)
+			return done(negative ? -m : m, 0.0);
+		if (!std::isfinite(fm))
+			break;
+		if ((fm > 0.0) == (fn > 0.0)) { n = m; fn = fm; }
+		else { far = m; ffar = fm; }
+	}
+	ScalarResult r = negative ? FindRootBrent(f, -far, -n, ffar, fn, 0.0, maxIter - used)
+	                          : FindRootBrent(f, n, far, fn, ffar, 0.0, maxIter - used);
+	r.iterations += used;
+	return r;
+}
+
 /// Brent's method for a local minimum of f in [a, b] (golden section plus parabolic steps).
 /// Converges to |x − x*| ≲ tol·|x| + atol, which for a smooth minimum means f is exact to
 /// about eps·|f|; the argument is exact only to about √eps — use a derivative root where the
