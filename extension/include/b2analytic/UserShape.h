@@ -34,7 +34,9 @@ struct UserShapeDef
 	bool smooth = false;
 	/// q with λ^(1/q) convex and about quadratic (see Shape::LevelPower); 1 if λ itself is.
 	double levelPower = 1.0;
-	/// Typical size of the particle: brackets radial roots and sets finite-difference steps.
+	/// Typical size of the particle: brackets radial roots and sets finite-difference steps. The
+	/// surface at `level` must lie within a factor 1e6 of it along the axes (InvalidParameter
+	/// naming 'lengthScale' otherwise).
 	double lengthScale = 1.0;
 	/// Polar angles of corners of the surface, if any (sampling and quadrature split there).
 	std::vector<double> cornerAngles;
