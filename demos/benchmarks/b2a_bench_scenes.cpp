@@ -524,8 +524,19 @@ int main(int argc, char** argv)
 	std::string text = "# b2a_bench_scenes\n\n";
 	text += "Machine: " + machine.cpu + ", " + std::to_string(machine.cores) + " hardware threads.  \n";
 	text += "Build: " + machine.buildFlags + ".  \n";
+	auto joined = [](const auto& list) {
+		std::string t;
+		for (const auto& v : list)
+			t += (t.empty() ? "" : ",") + std::to_string(v);
+		return t;
+	};
+	std::string sceneList;
+	for (const std::string& name : scenes)
+		sceneList += (sceneList.empty() ? "" : ",") + name;
 	text += "Run: `b2a_bench_scenes" + std::string(opt.quick ? " --quick" : "") + " --seed " + std::to_string(opt.seed) +
-	        " --steps " + std::to_string(windowSteps) + "`, " + F(progress.Elapsed(), 3) + " s.\n\n";
+	        " --counts " + joined(counts) + " --steps " + std::to_string(windowSteps) + " --scenes " + sceneList +
+	        (threadCounts.empty() ? std::string() : " --threads " + joined(threadCounts)) + "`, " + F(progress.Elapsed(), 3) +
+	        " s.\n\n";
 	text += "Box2D's b2World::GetProfile() in milliseconds over a window of " + std::to_string(windowSteps) +
 	        " steps (the same steps for both variants): step is the median, the phases are means (solve includes the "
 	        "broadphase). packing: superellipses n = 4 settling in a closed box 2√N mm wide; hopper: 2 × 0.66 mm "
