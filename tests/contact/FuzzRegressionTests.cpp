@@ -130,6 +130,33 @@ TEST_CASE("fuzz regression: finite input whose answer overflows is a failure, no
 	CHECK(ok.separation == doctest::Approx(1e150).epsilon(1e-13));
 }
 
+TEST_CASE("fuzz regression: the min-max fallback ends when both gauges are flat, 5e300 apart")
+{
+	// Found by b2a_fuzz_solvers (crash-minmax_flat_hessian_hang): far apart, the weighted Hessian
+	// of the min-max inner minimisation was exactly zero, and its Levenberg shift, started at
+	// 1e-12 times that zero, never grew: ComputeContact did not return. The user shape is the
+	// fuzzer's seven-pointed star, declared smooth, with neither levelOf nor gradient.
+	const double s = 0.79994570345080507, e = 0.41625085831998171, phi = -3.1293206200303367;
+	UserShapeDef def;
+	def.name = "fuzz star";
+	def.level = 1.6286106660563058;
+	def.function = [=](Vec2 x, double L) { return Length(x) / (s * (1.0 + e * std::cos(7.0 * std::atan2(x.y, x.x) + phi))) - L; };
+	def.smooth = true;
+	def.lengthScale = 0.44560413441735869;
+	const ShapePtr star = MakeUserShape(def);
+	const ShapePtr narrow = SuperellipseShape::FromZeta(0.050426933494874787, 3.1437117563018275, 3.0450980392156866);
+	const Pose pa(Vec2(4.9888082957765116e+300, -0.74343025584120515), MakeRot(0.97272827224460479, -0.23194764145389793));
+	const Pose pb(Vec2(-0.74343025584120515, -0.7172434845930612), MakeRot(0.66172349105593198, -0.74974797191106146));
+	const LevelResult minMax = SolveCommonLevelMinMax(*narrow, pa, *star, pb);
+	CHECK(NoNaN(minMax));
+	CHECK(minMax.status == SolveStatus::failed); // the level is beyond double range
+	CHECK(minMax.failure != nullptr);
+	const ContactResult c = ComputeContact(*narrow, pa, *star, pb);
+	CHECK(NoNaN(c));
+	if (c.Ok())
+		CHECK(c.separation > 1e300);
+}
+
 TEST_CASE("fuzz regression (known failure): a time of impact reported as a hit is a time the particles touch" *
           doctest::should_fail())
 {

@@ -27,10 +27,16 @@ double InnerMinimum(const PairFrame& f, double nu, Vec2& xi, int& evaluations)
 		const Vec2 g = A.grad + mu * B.grad;
 		Sym22 H = A.hess + mu * B.hess;
 		const double phi = A.psi + mu * B.psi;
-		const double trace = std::fabs(H.xx) + std::fabs(H.yy);
+		// A Hessian that vanishes (or overflows) gives no scale for the shift, which would never
+		// grow from zero. Far from both shapes the gauges are that flat; stop there.
+		const double scale = std::fabs(H.xx) + std::fabs(H.yy) + 2.0 * std::fabs(H.xy);
+		if (!(scale > 0.0) || !std::isfinite(scale))
+			break;
 		double det = H.xx * H.yy - H.xy * H.xy;
-		double shift = 1e-12 * trace;
-		while (!(det > 1e-14 * trace * trace && H.xx > 0.0 && H.yy > 0.0) && shift < 1e300)
+		double shift = 1e-12 * scale;
+		// The shifts add up to more than 2 · scale by the 14th try; past that both diagonal
+		// entries exceed 2|H.xy| and det ≥ 3/4 · scale². 30 tries is a cap that is never reached.
+		for (int k = 0; k < 30 && !(det > 1e-14 * scale * scale && H.xx > 0.0 && H.yy > 0.0); ++k)
 		{
 			H.xx += shift;
 			H.yy += shift;
