@@ -275,6 +275,26 @@ TEST_CASE("superellipse: an exponent of 1 makes corners on the axes, reported by
 	CHECK(MakeEllipse(1.3, 0.6)->CornerAngles().empty());
 }
 
+namespace
+{
+// FarCrossing's t against the reference: the larger root of level(x + t·d) = 1, bisected in long
+// double between `inside` (level below 1 there) and `beyond` (above). It must match to 1e-13 of
+// the size, and its point must lie on the surface.
+template <class Level>
+void CheckFarCrossing(const SuperellipseShape& s, Level&& level, Vec2 x, Vec2 d, double t, long double inside,
+                      long double beyond)
+{
+	for (int k = 0; k < 300; ++k)
+	{
+		const long double mid = 0.5L * (inside + beyond);
+		(level(x.x + mid * d.x, x.y + mid * d.y) < 1.0L ? inside : beyond) = mid;
+	}
+	const double size = std::max(s.A(), s.B());
+	CHECK(std::fabs(double(inside - t)) * Length(d) <= 1e-13 * size);
+	CHECK(RelativeError(s.Level(x + t * d), 1.0) < 1e-12);
+}
+} // namespace
+
 TEST_CASE("superellipse: the ellipse's far crossing of a line is the larger root, against long double bisection")
 {
 	// Reference: the line's crossings of λ = 1 found by bisection of λ(x + t·d) − 1 in long
@@ -314,21 +334,83 @@ TEST_CASE("superellipse: the ellipse's far crossing of a line is the larger root
 			}
 			++hits;
 			REQUIRE(found);
-			long double lo = tv, hi = tv + 4.0L * std::max(a, b) / std::sqrt((long double)(d.x * d.x + d.y * d.y)) + 1.0L;
-			for (int k = 0; k < 200; ++k)
-			{
-				const long double mid = 0.5L * (lo + hi);
-				(level(x.x + mid * d.x, x.y + mid * d.y) < 1.0L ? lo : hi) = mid;
-			}
-			const double size = std::max(se->A(), se->B());
-			CHECK(std::fabs(double(lo - t)) * Length(d) <= 1e-13 * size);
-			CHECK(RelativeError(s->Level(x + t * d), 1.0) < 1e-12);
+			const long double reach = 4.0L * std::max(a, b) / std::sqrt((long double)(d.x * d.x + d.y * d.y));
+			CheckFarCrossing(*se, level, x, d, t, tv, tv + reach + 1.0L);
 		}
 		CHECK(hits > 100);
 		CHECK(misses > 10);
 	}
-	// Other exponents have no closed form: the contact code searches instead.
+	// A heart has none: the contact code searches instead.
 	double t = 0.0;
-	CHECK_FALSE(MakeSuperellipse(1.0, 0.5, 4.0, 4.0)->FarCrossing(Vec2(0.1, 0.0), Vec2(1.0, 0.0), t));
 	CHECK_FALSE(MakeHeart(1.0)->FarCrossing(Vec2(0.1, 0.0), Vec2(1.0, 0.0), t));
+}
+
+TEST_CASE("superellipse: the far crossing of other exponents (Newton) against long double bisection")
+{
+	// Reference as for the ellipse: bisection of f(x + t·d) − 1 in long double, f = |x/a|^n +
+	// |y/b|^m, between the line's lowest-level point (found by golden sections of the convex f)
+	// and far beyond. Newton must give the far crossing to 1e-13 of the size with its point on
+	// the surface, and report a missing line as such. Lines come from inside, outside and the
+	// contact code's typical case: from a point near the surface along its normal.
+	const std::shared_ptr<const Shape> shapes[] = {MakeSuperellipse(1.0, 0.6, 4.0, 4.0), MakeSuperellipse(2.0, 0.5, 8.0, 8.0),
+	                                               MakeSuperellipse(1.0, 0.7, 2.5, 3.7), MakeSuperellipse(0.8, 1.0, 12.0, 12.0),
+	                                               MakeSuperellipse(1.0, 0.5, 4.0, 8.0), MakeSuperellipse(1.0, 0.5, 1.5, 3.0),
+	                                               SuperellipseShape::FromZeta(1.0, 0.5, 2.0)};
+	Random rng(78);
+	for (const auto& s : shapes)
+	{
+		CAPTURE(s->Describe());
+		const auto* se = dynamic_cast<const SuperellipseShape*>(s.get());
+		REQUIRE(se != nullptr);
+		const long double a = se->A(), b = se->B(), n = se->N(), m = se->M();
+		auto level = [&](long double x, long double y) { return std::pow(std::fabs(x / a), n) + std::pow(std::fabs(y / b), m); };
+		int hits = 0, misses = 0, normals = 0;
+		for (int i = 0; i < 600; ++i)
+		{
+			Vec2 x, d;
+			if (i % 3 == 0)
+			{
+				// Near the surface along the outward normal, as ContactFromLevel asks.
+				const Vec2 q = s->SurfacePoint(rng.Angle());
+				d = Normalize(s->Gradient(q));
+				x = q + rng.Uniform(-0.05, 0.05) * std::max(se->A(), se->B()) * d;
+				++normals;
+			}
+			else
+			{
+				x = rng.Uniform(0.0, 2.0) * Vec2(se->A() * std::cos(rng.Angle()), se->B() * std::sin(rng.Angle()));
+				d = rng.LogUniform(1e-2, 1e2) * Rotate(Rot(rng.Angle()), Vec2(1, 0));
+			}
+			CAPTURE(x.x);
+			CAPTURE(x.y);
+			CAPTURE(d.x);
+			CAPTURE(d.y);
+			const long double reach = 4.0L * std::max(a, b) / std::sqrt((long double)(d.x * d.x + d.y * d.y));
+			auto along = [&](long double t) { return level(x.x + t * d.x, x.y + t * d.y); };
+			long double lo = -reach - 1.0L, hi = reach + 1.0L;
+			for (int k = 0; k < 300; ++k)
+			{
+				const long double m1 = lo + (hi - lo) * 0.381966L, m2 = hi - (hi - lo) * 0.381966L;
+				(along(m1) < along(m2) ? hi : lo) = (along(m1) < along(m2) ? m2 : m1);
+			}
+			const long double tv = 0.5L * (lo + hi);
+			const long double lowest = along(tv);
+			double t = 0.0;
+			const bool found = s->FarCrossing(x, d, t);
+			if (lowest > 1.0L + 1e-9L)
+			{
+				++misses;
+				CHECK_FALSE(found);
+				continue;
+			}
+			if (lowest > 1.0L - 1e-9L)
+				continue; // grazing to rounding: either answer is right
+			++hits;
+			REQUIRE(found);
+			CheckFarCrossing(*se, level, x, d, t, tv, tv + reach + 1.0L);
+		}
+		CHECK(hits > 200);
+		CHECK(misses > 10);
+		CHECK(normals == 200);
+	}
 }

@@ -35,7 +35,11 @@ public:
 	Vec2 Gradient(Vec2 x) const override;
 	double RadiusAt(Vec2 u, double level) const override;
 	Vec2 Support(Vec2 d) const override;
-	/// The ellipse's (n = m = 2) far crossing: the larger root of a quadratic.
+	/// Closed form for ellipses; otherwise two supports, the particle being symmetric about its centre.
+	Box ComputeAABB(const Pose& pose) const override;
+	/// The far crossing of the surface by the body line x + t·d: for an ellipse (n = m = 2) the
+	/// larger root of a quadratic, for other exponents Newton on a convex function of t, from
+	/// where it descends monotonically (false when the line misses or only grazes the particle).
 	bool FarCrossing(Vec2 x, Vec2 d, double& t) const override;
 
 	/// Semi-axis along body x.
@@ -63,6 +67,8 @@ private:
 	static double RootOf(double t, double e);
 	// f and its derivatives (raw sum form, before the ζ transform).
 	LevelDerivatives RawDerivatives(Vec2 x) const;
+	// FarCrossing for exponents other than n = m = 2.
+	bool FarCrossingNewton(Vec2 x, Vec2 d, double& t) const;
 
 	double m_a, m_b, m_n, m_m;
 	double m_zeta;       // > 0 for the normalised form

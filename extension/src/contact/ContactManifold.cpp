@@ -162,7 +162,14 @@ bool LowestAlong(const ManifoldSide& b, Vec2 p, Vec2 n, Vec2& out)
 {
 	if (b.shape)
 	{
-		// Start beyond B's support plane along −n (outside B) and enter along +n.
+		// B's near crossing of the line is its far crossing of the reversed line, where B has one.
+		double t = 0.0;
+		if (b.shape->IsConvex() && b.shape->FarCrossing(ToBody(b.pose, p), InvRotate(b.pose.q, -n), t))
+		{
+			out = p - t * n;
+			return true;
+		}
+		// Else start beyond B's support plane along −n (outside B) and enter along +n.
 		const double low = -Dot(WorldSupport(*b.shape, b.pose, -n), n);
 		const double margin = 1e-3 * b.shape->BoundingRadius() + 1e-12;
 		const Vec2 start = p + (low - margin - Dot(p, n)) * n;

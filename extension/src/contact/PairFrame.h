@@ -108,8 +108,16 @@ struct PairFrame
 		if (q == 1.0) return lambda;
 		return lambda > 0.0 ? PsiOfPositive(lambda) : 0.0;
 	}
-	/// λ^{1/q} for λ > 0: a square root for the commonest power (ellipses, q = 2).
-	double PsiOfPositive(double lambda) const { return power == 2.0 ? std::sqrt(lambda) : std::pow(lambda, 1.0 / power); }
+	/// λ^{1/q} for λ > 0: square roots for the commonest powers (q = 2: ellipses and n = 4;
+	/// q = 4: n = 8), pow otherwise.
+	double PsiOfPositive(double lambda) const
+	{
+		if (power == 2.0)
+			return std::sqrt(lambda);
+		if (power == 4.0)
+			return std::sqrt(std::sqrt(lambda));
+		return std::pow(lambda, 1.0 / power);
+	}
 	/// Levels are measured in units of the shape's own surface level (when that is positive), so
 	/// that "touching" is "common level ≤ 1" for every pair; the superellipse family is unchanged.
 	static double LevelUnit(const PosedShape& ps)

@@ -30,6 +30,15 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 		return -1.0;
 	if (shape.IsConvex())
 	{
+		// The shape's own far crossing where it has one: leaving along dir from inside, or
+		// entering from outside, which is the far crossing of the reversed line.
+		const Vec2 xb = ToBody(pose, X), db = InvRotate(pose.q, dir);
+		double t = 0.0;
+		if (f0 < 0.0 ? shape.FarCrossing(xb, db, t) : shape.FarCrossing(xb, -db, t))
+		{
+			const double s = f0 < 0.0 ? t : -t;
+			return s >= 0.0 && s <= sMax ? s : -1.0;
+		}
 		const double fmax = f(sMax);
 		if (f0 < 0.0)
 			return fmax > 0.0 ? FindRootBrent(f, 0.0, sMax, f0, fmax, 0.0, 200).x : -1.0;
