@@ -200,3 +200,42 @@ TEST_CASE("surface samples: computed once per count and shared, also across thre
 		CHECK(seen[t] == seen[0]);
 	CHECK(ellipse->Samples(777).get() == seen[0]);
 }
+
+TEST_CASE("surface samples: the same whatever other shapes and counts were sampled before on the thread")
+{
+	// The dense pass is reused between counts of one shape (a fixture asks for two in a row). The
+	// samples of a count must not depend on that: each shape is sampled fresh, then its twin (same
+	// parameters) after interleaving other shapes and counts, and the two must be identical.
+	auto make = [](int which) -> ShapePtr {
+		switch (which)
+		{
+		case 0: return MakeEllipse(2.0, 0.66);
+		case 1: return MakeSuperellipse(1.0, 0.6, 4.0, 4.0);
+		case 2: return MakeHeart(1.0);
+		default: return MakeSuperellipse(1.0, 0.5, 1.0, 2.0); // corners
+		}
+	};
+	for (int which = 0; which < 4; ++which)
+	{
+		CAPTURE(which);
+		const ShapePtr fresh = make(which);
+		const auto seven = fresh->Samples(7);
+		const ShapePtr twin = make(which);
+		const ShapePtr other = make((which + 1) % 4);
+		const auto twinDefault = twin->Samples(); // fills the thread's dense pass with the twin's
+		(void)other->Samples(33);                 // ... then another shape's
+		const auto twinSeven = twin->Samples(7);  // so this one computes its dense pass again
+		const auto freshDefault = fresh->Samples();
+		REQUIRE(twinSeven->Count() == seven->Count());
+		for (int k = 0; k < seven->Count(); ++k)
+		{
+			CHECK(twinSeven->angle[k] == seven->angle[k]);
+			CHECK(twinSeven->point[k].x == seven->point[k].x);
+			CHECK(twinSeven->point[k].y == seven->point[k].y);
+		}
+		REQUIRE(twinDefault->Count() == freshDefault->Count());
+		for (int k = 0; k < freshDefault->Count(); ++k)
+			CHECK(twinDefault->angle[k] == freshDefault->angle[k]);
+		CHECK(twinDefault->maxDeviation == freshDefault->maxDeviation);
+	}
+}

@@ -3,6 +3,7 @@
 
 #include "b2analytic/Math.h"
 
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -143,7 +144,8 @@ public:
 	/// (for a non-convex shape, the support point of its convex hull). d need not be unit.
 	virtual Vec2 Support(Vec2 d) const;
 	/// Tight world AABB of the particle at a pose: it touches the particle on all four sides.
-	Box ComputeAABB(const Pose& pose) const;
+	/// (Box2D asks for it twice per moving body and step, so shapes with a cheaper form override it.)
+	virtual Box ComputeAABB(const Pose& pose) const;
 	/// Largest distance from the body origin to the surface.
 	double BoundingRadius() const { return m_boundingRadius; }
 	/// Area, centroid and second moments at the own surface level.
@@ -189,6 +191,7 @@ private:
 	MassProperties m_mass;
 	std::vector<double> m_corners;
 
+	std::uint64_t m_serial; // unique per shape: keys the dense sampling pass reused between sample counts
 	mutable std::mutex m_sampleMutex;
 	mutable std::vector<std::pair<int, std::shared_ptr<const SurfaceSamples>>> m_samples;
 };

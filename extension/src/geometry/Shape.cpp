@@ -5,6 +5,8 @@
 #include "numerics/RootFinding.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 
@@ -41,8 +43,31 @@ const char* FamilyName(ShapeFamily family)
 	}
 }
 
+namespace
+{
+struct DensePoint
+{
+	double theta;
+	Vec2 p;
+};
+
+// The dense pass of the last shape sampled on this thread. Creating a fixture asks one shape
+// for two sample counts in a row (its proxy's and the default), and the dense pass, the costly
+// part, is the same for both. The key is a serial number, not the address: a freed shape's
+// address may be reused by the next one.
+struct DenseCache
+{
+	std::uint64_t serial = 0;
+	std::vector<DensePoint> dense;
+};
+thread_local DenseCache t_denseCache;
+
+std::atomic<std::uint64_t> g_nextSerial{1};
+} // namespace
+
 Shape::Shape(ShapeFamily family, double surfaceLevel, bool convex, bool smoothConvex, double levelPower)
-	: m_family(family), m_surfaceLevel(surfaceLevel), m_convex(convex), m_smoothConvex(smoothConvex), m_levelPower(levelPower)
+	: m_family(family), m_surfaceLevel(surfaceLevel), m_convex(convex), m_smoothConvex(smoothConvex), m_levelPower(levelPower),
+	  m_serial(g_nextSerial.fetch_add(1, std::memory_order_relaxed))
 {
 }
 
@@ -52,6 +77,7 @@ void Shape::AddCorner(double theta)
 {
 	m_corners.push_back(theta);
 	std::sort(m_corners.begin(), m_corners.end());
+	m_serial = g_nextSerial.fetch_add(1, std::memory_order_relaxed); // the dense pass depends on the corners
 }
 
 double Shape::RadiusAt(Vec2 u, double level) const
@@ -156,25 +182,17 @@ double WrapAngle(double t)
 
 } // namespace
 
-std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
+namespace
 {
-	if (count < 3)
-		throw InvalidParameter("surface samples", "count", "must be >= 3", count);
-	std::lock_guard<std::mutex> lock(m_sampleMutex);
-	for (const auto& entry : m_samples)
-		if (entry.first == count)
-			return entry.second;
-
-	const double L = m_surfaceLevel;
-	// 1. Dense adaptive polar sampling: split an angle interval while its chord is long or
-	//    the chord direction turns, so thin tips and cusps are resolved.
-	struct Dense { double theta; Vec2 p; };
-	std::vector<Dense> dense;
+// The dense pass: SurfacePoint at angles refined until chords are short and straight.
+void DenseSamples(const Shape& shape, std::vector<DensePoint>& dense)
+{
+	const double L = shape.SurfaceLevel();
 	std::vector<double> start;
 	const int initial = 64;
 	for (int i = 0; i < initial; ++i)
 		start.push_back(-kPi + 2.0 * kPi * i / initial);
-	for (double c : m_corners)
+	for (double c : shape.CornerAngles())
 		start.push_back(WrapAngle(c));
 	std::sort(start.begin(), start.end());
 	start.erase(std::unique(start.begin(), start.end()), start.end());
@@ -183,11 +201,11 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 	std::vector<Vec2> startPoints;
 	for (double t : start)
 	{
-		startPoints.push_back(SurfacePoint(t, L));
+		startPoints.push_back(shape.SurfacePoint(t, L));
 		scale = std::max(scale, Length(startPoints.back()));
 	}
 	const double hMax = scale * 2.0 * kPi / 2048.0;
-	const double turnMax = 2.0 * kPi / 1024.0;
+	const double tanTurnMax = std::tan(2.0 * kPi / 1024.0);
 	struct Task { double t0; Vec2 p0; double t1; Vec2 p1; int depth; };
 	std::vector<Task> stack;
 	for (size_t i = 0; i < start.size(); ++i)
@@ -202,9 +220,13 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 			const Task task = stack.back();
 			stack.pop_back();
 			const double tm = 0.5 * (task.t0 + task.t1);
-			const Vec2 pm = SurfacePoint(tm, L);
+			const Vec2 pm = shape.SurfacePoint(tm, L);
 			const bool longChord = Distance(task.p0, task.p1) > hMax;
-			const bool turning = TurnAngle(pm - task.p0, task.p1 - pm) > turnMax;
+			// Turned by more than turnMax: a test on the cross and dot products, without atan2.
+			const Vec2 in = pm - task.p0, out = task.p1 - pm;
+			const double along = Dot(in, out), across = std::fabs(Cross(in, out));
+			// (Turned back, along < 0, counts; a zero or non-finite chord does not, as before.)
+			const bool turning = along < 0.0 || across > tanTurnMax * along;
 			if ((longChord || turning) && task.depth < 40)
 			{
 				stack.push_back({tm, pm, task.t1, task.p1, task.depth + 1});
@@ -216,8 +238,34 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 			}
 		}
 	}
+}
+} // namespace
+
+std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
+{
+	if (count < 3)
+		throw InvalidParameter("surface samples", "count", "must be >= 3", count);
+	std::lock_guard<std::mutex> lock(m_sampleMutex);
+	for (const auto& entry : m_samples)
+		if (entry.first == count)
+			return entry.second;
+
+	const double L = m_surfaceLevel;
+	// 1. Dense adaptive polar sampling: split an angle interval while its chord is long or
+	//    the chord direction turns, so thin tips and cusps are resolved.
+	DenseCache& cache = t_denseCache;
+	if (cache.serial != m_serial)
+	{
+		cache.serial = 0; // stays invalid if the pass throws
+		cache.dense.clear();
+		DenseSamples(*this, cache.dense);
+		cache.serial = m_serial;
+	}
+	// A copy: SurfacePoint below runs user code (a UserShape's function), which may sample
+	// another shape on this thread.
+	const std::vector<DensePoint> dense = cache.dense;
 	const int nd = int(dense.size());
-	for (const Dense& d : dense)
+	for (const DensePoint& d : dense)
 		if (!IsFinite(d.p))
 			throw InvalidParameter(Describe() + ": no finite surface point at polar angle " + FormatNumber(d.theta) +
 			                           " (field 'function' must describe a bounded, star-shaped particle)",
