@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <typeinfo>
 
 namespace b2a
 {
@@ -31,7 +32,9 @@ const SuperellipseShape* AsPlainEllipse(const Shape& s)
 {
 	if (s.Family() != ShapeFamily::ellipse && s.Family() != ShapeFamily::circle)
 		return nullptr;
-	const auto* e = dynamic_cast<const SuperellipseShape*>(&s);
+	// The class is final: comparing the dynamic type is exact and costs less than a dynamic_cast
+	// (two per contact between ellipses).
+	const auto* e = typeid(s) == typeid(SuperellipseShape) ? static_cast<const SuperellipseShape*>(&s) : nullptr;
 	// n = m = 2 with the level f itself (ζ = 0) or f^(1/1) (ζ = 1).
 	return e && e->N() == 2.0 && e->M() == 2.0 && (e->Zeta() == 0.0 || e->Zeta() == 1.0) ? e : nullptr;
 }
@@ -110,54 +113,77 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 			return r;
 		}
 	}
-	// The point of the last multiplier, in long double: H's condition grows like the aspect
-	// ratio squared (1e6 for 1000:1 needles), and its entries mix 1/a² and 1/b² through the
-	// rotation, so double rounding there would cost the point up to 1e-10 of the size.
-	using LD = long double;
-	struct M2 { LD xx, xy, yy; };
-	auto matrix = [](const SuperellipseShape& e, const Pose& p) {
-		const LD c = p.q.c, sn = p.q.s, ia = 1.0L / (LD(e.A()) * e.A()), ib = 1.0L / (LD(e.B()) * e.B());
-		return M2{c * c * ia + sn * sn * ib, c * sn * (ia - ib), sn * sn * ia + c * c * ib};
-	};
-	const M2 la = matrix(a, pa), lb = matrix(b, pb);
-	const LD rx = LD(pb.p.x) - pa.p.x, ry = LD(pb.p.y) - pa.p.y;
-	LD sl = s, px = 0, py = 0, levelA = 0, levelB = 0;
-	// x(s), λA, λB; then (once) the Newton correction of s from h and h' in long double, whose
-	// rounding no longer limits s as the double h's did.
-	for (int pass = 0; pass < 2; ++pass)
+	// The point of the last multiplier. H's condition grows like the aspect ratio squared (1e6
+	// for 1000:1 needles), and its entries mix 1/a² and 1/b² through the rotation, so double
+	// rounding there would cost the point up to 1e-10 of the size: elongated pairs finish in long
+	// double. Up to aspect 4 the condition is at most 16 and double keeps the point to ~1e-15.
+	const double aspectA = std::max(a.A(), a.B()) / std::min(a.A(), a.B());
+	const double aspectB = std::max(b.A(), b.B()) / std::min(b.A(), b.B());
+	Vec2 gA;            // MA·x, half of ∇λA: the normal's direction
+	Vec2 point;         // the world point
+	double level = 0.0; // F(s): flat at the maximum, so s's rounding hardly moves it
+	bool usable = true; // the double finish also checks its solve and λB
+	if (std::max(aspectA, aspectB) <= 4.0)
 	{
-		const M2 h{(1 - sl) * la.xx + sl * lb.xx, (1 - sl) * la.xy + sl * lb.xy, (1 - sl) * la.yy + sl * lb.yy};
-		const LD bx = sl * (lb.xx * rx + lb.xy * ry), by = sl * (lb.xy * rx + lb.yy * ry);
-		const LD dl = h.xx * h.yy - h.xy * h.xy;
-		px = (h.yy * bx - h.xy * by) / dl;
-		py = (h.xx * by - h.xy * bx) / dl;
-		const LD qx = px - rx, qy = py - ry;
-		const LD gax = la.xx * px + la.xy * py, gay = la.xy * px + la.yy * py;
-		const LD gbx = lb.xx * qx + lb.xy * qy, gby = lb.xy * qx + lb.yy * qy;
-		levelA = px * gax + py * gay;
-		levelB = qx * gbx + qy * gby;
-		if (pass == 1)
-			break;
-		const LD dx = 2 * (gbx - gax), dy = 2 * (gby - gay);
-		const LD wx = (h.yy * dx - h.xy * dy) / dl, wy = (h.xx * dy - h.xy * dx) / dl;
-		const LD slopeL = -0.5L * (dx * wx + dy * wy);
-		const LD next = sl - (levelB - levelA) / slopeL;
-		if (slopeL < 0 && next > 0 && next < 1)
-			sl = next;
+		const Sym22 H = (1.0 - s) * MA + s * MB;
+		double det = 0.0;
+		x = SolveSpd(H, s * (MB * rc), det);
+		gA = MA * x;
+		lamA = Dot(x, gA);
+		lamB = Quad(MB, x - rc);
+		usable = det > 0.0 && std::isfinite(lamB);
+		level = (1.0 - s) * lamA + s * lamB;
+		point = pa.p + x;
 	}
-	s = double(sl);
-	x = Vec2(double(px), double(py));
-	lamA = double(levelA);
-	lamB = double(levelB);
-	const Vec2 gA(double(la.xx * px + la.xy * py), double(la.xy * px + la.yy * py));
-	if (!IsFinite(x) || !std::isfinite(lamA) || !(LengthSquared(gA) > 0.0))
+	else
+	{
+		using LD = long double;
+		struct M2 { LD xx, xy, yy; };
+		auto matrix = [](const SuperellipseShape& e, const Pose& p) {
+			const LD c = p.q.c, sn = p.q.s, ia = 1.0L / (LD(e.A()) * e.A()), ib = 1.0L / (LD(e.B()) * e.B());
+			return M2{c * c * ia + sn * sn * ib, c * sn * (ia - ib), sn * sn * ia + c * c * ib};
+		};
+		const M2 la = matrix(a, pa), lb = matrix(b, pb);
+		const LD rx = LD(pb.p.x) - pa.p.x, ry = LD(pb.p.y) - pa.p.y;
+		LD sl = s, px = 0, py = 0, levelA = 0, levelB = 0;
+		// x(s), λA, λB; then (once) the Newton correction of s from h and h' in long double, whose
+		// rounding no longer limits s as the double h's did.
+		for (int pass = 0; pass < 2; ++pass)
+		{
+			const M2 h{(1 - sl) * la.xx + sl * lb.xx, (1 - sl) * la.xy + sl * lb.xy, (1 - sl) * la.yy + sl * lb.yy};
+			const LD bx = sl * (lb.xx * rx + lb.xy * ry), by = sl * (lb.xy * rx + lb.yy * ry);
+			const LD dl = h.xx * h.yy - h.xy * h.xy;
+			px = (h.yy * bx - h.xy * by) / dl;
+			py = (h.xx * by - h.xy * bx) / dl;
+			const LD qx = px - rx, qy = py - ry;
+			const LD gax = la.xx * px + la.xy * py, gay = la.xy * px + la.yy * py;
+			const LD gbx = lb.xx * qx + lb.xy * qy, gby = lb.xy * qx + lb.yy * qy;
+			levelA = px * gax + py * gay;
+			levelB = qx * gbx + qy * gby;
+			if (pass == 1)
+				break;
+			const LD dx = 2 * (gbx - gax), dy = 2 * (gby - gay);
+			const LD wx = (h.yy * dx - h.xy * dy) / dl, wy = (h.xx * dy - h.xy * dx) / dl;
+			const LD slopeL = -0.5L * (dx * wx + dy * wy);
+			const LD next = sl - (levelB - levelA) / slopeL;
+			if (slopeL < 0 && next > 0 && next < 1)
+				sl = next;
+		}
+		s = double(sl);
+		x = Vec2(double(px), double(py));
+		lamA = double(levelA);
+		gA = Vec2(double(la.xx * px + la.xy * py), double(la.xy * px + la.yy * py));
+		level = double((1 - sl) * levelA + sl * levelB);
+		point = Vec2(double(pa.p.x + LD(px)), double(pa.p.y + LD(py)));
+	}
+	if (!usable || !IsFinite(x) || !std::isfinite(lamA) || !(LengthSquared(gA) > 0.0))
 	{
 		r.failure = "ellipse pair: non-finite answer";
 		return r;
 	}
 	r.status = SolveStatus::converged;
-	r.level = double((1 - sl) * levelA + sl * levelB); // F(s): flat at the maximum, so s's rounding hardly moves it
-	r.point = Vec2(double(pa.p.x + LD(px)), double(pa.p.y + LD(py)));
+	r.level = level;
+	r.point = point;
 	r.normal = Normalize(gA);
 	r.multiplier = s / (1.0 - s);
 	return r;
