@@ -145,3 +145,50 @@ TEST_CASE("warm starting carries impulses across steps and lowers the solver's r
 	CHECK(carriedWarm > 0.0); // the matched ids brought last step's impulses along
 	CHECK(warm < 0.1 * cold);
 }
+
+TEST_CASE("Box2D's contact touches exactly when the true shapes overlap, while pairs pass, graze and drift apart")
+{
+	// The adapter skips the solve when the last normal or the line between the centres separates
+	// the particles. Here pairs inside each other's bounding circles pass at various offsets and
+	// spins; before every step the true contact is computed directly, and after the step (whose
+	// collide phase saw the same transforms) Box2D's contact must agree with it.
+	struct Pair
+	{
+		ShapePtr a, b;
+	};
+	const Pair pairs[] = {{MakeEllipse(1.0, 0.33), MakeEllipse(1.0, 0.33)},
+	                      {MakeSuperellipse(1.0, 0.6, 4.0, 4.0), MakeSuperellipse(0.8, 0.5, 4.0, 4.0)},
+	                      {MakeEllipse(1.5, 0.2), MakeSuperellipse(0.7, 0.7, 8.0, 8.0)}};
+	int touchingSteps = 0, apartSteps = 0, checked = 0;
+	for (const Pair& p : pairs)
+	{
+		for (int run = 0; run < 6; ++run)
+		{
+			CAPTURE(run);
+			b2World world(b2Vec2(0.0f, 0.0f));
+			b2Body* a = MakeParticle(world, p.a, 0.0f, 0.0f, 0.3f * run, 1.0f, 0.0f);
+			b2Body* b = MakeParticle(world, p.b, -3.0f, 0.25f * run - 0.4f, -0.5f * run, 1.0f, 0.0f);
+			b->SetLinearVelocity(b2Vec2(2.0f, 0.0f));
+			b->SetAngularVelocity(0.7f * (run % 3 - 1));
+			for (int step = 0; step < 200; ++step)
+			{
+				const ContactResult truth = ComputeFixtureContact(a->GetFixtureList(), b->GetFixtureList());
+				REQUIRE(truth.Ok());
+				world.Step(1.0f / 60.0f, 8, 3);
+				const b2Contact* contact = world.GetContactList();
+				const bool boxTouching = contact != nullptr && contact->IsTouching();
+				if (contact == nullptr)
+					continue; // the broad phase has not paired them: far apart
+				++checked;
+				CAPTURE(step);
+				CAPTURE(truth.separation);
+				CHECK(boxTouching == truth.touching);
+				(truth.touching ? touchingSteps : apartSteps)++;
+			}
+		}
+	}
+	// The runs must exercise both sides: contacts apart inside the broad phase, and touching.
+	CHECK(touchingSteps > 50);
+	CHECK(apartSteps > 200);
+	CHECK(checked == touchingSteps + apartSteps);
+}

@@ -6,6 +6,7 @@
 #include "b2analytic/Contact.h"
 #include "b2analytic/ContactManifold.h"
 #include "b2analytic/PolygonContact.h"
+#include "b2analytic/SurfaceQueries.h"
 #include "b2analytic/SuperellipseShape.h"
 
 #include <box2d/b2_block_allocator.h>
@@ -38,6 +39,15 @@ const bool g_installed = AnalyticContact::Install();
 
 Vec2 V(const b2Vec2& v) { return Vec2(v.x, v.y); }
 b2Vec2 F(Vec2 v) { return b2Vec2(float(v.x), float(v.y)); }
+
+// Whether the axis n (unit, from A towards B) separates the particles: B's lowest point along n
+// lies above A's highest, −h_B(−n) − h_A(n) > 0. Two supports, against a solve.
+bool SeparatedAlong(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Vec2 n)
+{
+	const double highA = Dot(WorldSupport(a, pa, n), n);
+	const double lowB = Dot(WorldSupport(b, pb, -n), n);
+	return lowB - highA > 0.0;
+}
 
 // Write a manifold in Box2D's e_faceA form: normal and the point on A in A's frame, points on B
 // in B's frame. Ids 0 and 1 follow the patch's ends along the tangent, so they are stable while
@@ -226,12 +236,29 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		const Pose poseA = pa->WorldPose(xfA), poseB = pb->WorldPose(xfB);
 		// Bounding circles apart: no contact, and no solve. The tight AABBs of the broad phase
 		// overlap for many pairs whose particles are apart (elongated ones especially).
-		const double reach = pa->Data().shape->BoundingRadius() + pb->Data().shape->BoundingRadius();
-		if (LengthSquared(poseB.p - poseA.p) > reach * reach)
+		const Shape& shapeA = *pa->Data().shape;
+		const Shape& shapeB = *pb->Data().shape;
+		const double reach = shapeA.BoundingRadius() + shapeB.BoundingRadius();
+		const Vec2 between = poseB.p - poseA.p;
+		if (LengthSquared(between) > reach * reach)
 			return;
-		c = ComputeContact(*pa->Data().shape, poseA, *pb->Data().shape, poseB, MethodChoice::automatic, pa->Data().solver, &m_warm);
-		sideA = {pa->Data().shape.get(), poseA};
-		sideB = {pb->Data().shape.get(), poseB};
+		// Separating axes before the solve: the last normal this contact found (the exact
+		// separating direction then, and still one while the pair drifts apart or rests apart),
+		// then the line between the centres. In the hopper benchmark a third of the pairs that
+		// reach this point are apart, and most of them stop here. Their warm start is kept.
+		if (m_hasNormal && SeparatedAlong(shapeA, poseA, shapeB, poseB, m_lastNormal))
+			return;
+		const double distance = Length(between);
+		if (distance > 0.0 && SeparatedAlong(shapeA, poseA, shapeB, poseB, between / distance))
+			return;
+		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, pa->Data().solver, &m_warm);
+		if (c.Ok())
+		{
+			m_lastNormal = c.normal;
+			m_hasNormal = true;
+		}
+		sideA = {&shapeA, poseA};
+		sideB = {&shapeB, poseB};
 		tolerance = std::min(pa->Data().patchTolerance, pb->Data().patchTolerance);
 		minWidth = std::min(pa->Data().patchMinWidth, pb->Data().patchMinWidth);
 	}

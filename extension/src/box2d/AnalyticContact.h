@@ -51,7 +51,7 @@ private:
 
 	Kind m_kind;
 	WarmStart m_warm;       // Newton's previous solution (analytic pairs)
-	Vec2 m_lastNormal;      // previous normal (analytic against polygon or edge), world
+	Vec2 m_lastNormal;      // previous normal, world (a guess against polygons, a separating axis to try between analytic particles)
 	bool m_hasNormal = false;
 	// Box2D frees contacts without running their destructors when a world is destroyed, so
 	// every member here must be trivially destructible: the circle is borrowed from a cache.
