@@ -15,6 +15,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <time.h>
@@ -524,17 +525,20 @@ int main(int argc, char** argv)
 	std::string text = "# b2a_bench_scenes\n\n";
 	text += "Machine: " + machine.cpu + ", " + std::to_string(machine.cores) + " hardware threads.  \n";
 	text += "Build: " + machine.buildFlags + ".  \n";
+	// A comma-separated list of numbers or names, as the options take them.
 	auto joined = [](const auto& list) {
 		std::string t;
 		for (const auto& v : list)
-			t += (t.empty() ? "" : ",") + std::to_string(v);
+		{
+			if constexpr (std::is_convertible_v<decltype(v), std::string>)
+				t += (t.empty() ? "" : ",") + std::string(v);
+			else
+				t += (t.empty() ? "" : ",") + std::to_string(v);
+		}
 		return t;
 	};
-	std::string sceneList;
-	for (const std::string& name : scenes)
-		sceneList += (sceneList.empty() ? "" : ",") + name;
 	text += "Run: `b2a_bench_scenes" + std::string(opt.quick ? " --quick" : "") + " --seed " + std::to_string(opt.seed) +
-	        " --counts " + joined(counts) + " --steps " + std::to_string(windowSteps) + " --scenes " + sceneList +
+	        " --counts " + joined(counts) + " --steps " + std::to_string(windowSteps) + " --scenes " + joined(scenes) +
 	        (threadCounts.empty() ? std::string() : " --threads " + joined(threadCounts)) + "`, " + F(progress.Elapsed(), 3) +
 	        " s.\n\n";
 	text += "Box2D's b2World::GetProfile() in milliseconds over a window of " + std::to_string(windowSteps) +
