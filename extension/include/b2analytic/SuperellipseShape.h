@@ -73,6 +73,9 @@ private:
 	double m_a, m_b, m_n, m_m;
 	double m_zeta;       // > 0 for the normalised form
 	int m_nInt, m_mInt;  // exponents as small integers, or -1
+	// Constants of every level query, computed once (a division costs as much as several products):
+	// 1/a, 1/b, and the derivative factors n/a, m/b, n(n−1)/a², m(m−1)/b².
+	double m_invA, m_invB, m_gradX, m_gradY, m_hessX, m_hessY;
 };
 
 /// Ellipse x²/a² + y²/b² ≤ 1 (a superellipse with n = m = 2).

@@ -23,6 +23,7 @@ struct PosedShape
 {
 	const Shape* shape; ///< the shape
 	Pose pose;          ///< its pose
+	double unit;        ///< PairFrame::LevelUnit of the shape (1 / its own level), computed once
 };
 
 /// Centres closer than 1e-12 of the pair's mean bounding radius: no level point lies between
@@ -43,11 +44,13 @@ struct PairFrame
 	/// monotone map λ ↦ λ^{1/q}. The smaller LevelPower keeps both ψ convex (λ^{1/q} stays convex
 	/// for every q between 1 and a shape's own LevelPower).
 	double power;
+	double invPower; ///< 1 / power (the chain rule below needs it in every evaluation)
 
 	/// Frame for a pair.
 	PairFrame(const Shape& sa, const Pose& pa, const Shape& sb, const Pose& pb)
-		: a{&sa, pa}, b{&sb, pb}, origin(0.5 * (pa.p + pb.p)), scale(0.5 * (sa.BoundingRadius() + sb.BoundingRadius())),
-		  power(sa.LevelPower() < sb.LevelPower() ? sa.LevelPower() : sb.LevelPower())
+		: a{&sa, pa, UnitOf(sa)}, b{&sb, pb, UnitOf(sb)}, origin(0.5 * (pa.p + pb.p)),
+		  scale(0.5 * (sa.BoundingRadius() + sb.BoundingRadius())),
+		  power(sa.LevelPower() < sb.LevelPower() ? sa.LevelPower() : sb.LevelPower()), invPower(1.0 / power)
 	{
 	}
 	/// World point of ξ.
@@ -63,7 +66,7 @@ struct PairFrame
 		const Vec2 x = ToBody(ps.pose, World(xi));
 		GaugeValue g;
 		const double q = power;
-		const double k = LevelUnit(ps);
+		const double k = ps.unit;
 		if (withHessian)
 		{
 			const LevelDerivatives d = ps.shape->Derivatives(x);
@@ -83,8 +86,9 @@ struct PairFrame
 		else if (g.lambda > 0.0)
 		{
 			g.psi = PsiOfPositive(g.lambda);
-			const double d1 = g.psi / (q * g.lambda);
-			const double d2 = d1 * (1.0 / q - 1.0) / g.lambda;
+			const double invLambda = 1.0 / g.lambda;
+			const double d1 = g.psi * invPower * invLambda;
+			const double d2 = d1 * (invPower - 1.0) * invLambda;
 			if (withHessian)
 				g.hess = d1 * g.hess + d2 * Outer(g.grad);
 			g.grad = d1 * g.grad;
@@ -103,7 +107,7 @@ struct PairFrame
 	/// ψ of one shape at ξ, without derivatives.
 	double Psi(const PosedShape& ps, Vec2 xi) const
 	{
-		const double lambda = LevelUnit(ps) * ps.shape->Level(ToBody(ps.pose, World(xi)));
+		const double lambda = ps.unit * ps.shape->Level(ToBody(ps.pose, World(xi)));
 		const double q = power;
 		if (q == 1.0) return lambda;
 		return lambda > 0.0 ? PsiOfPositive(lambda) : 0.0;
@@ -116,13 +120,15 @@ struct PairFrame
 			return std::sqrt(lambda);
 		if (power == 4.0)
 			return std::sqrt(std::sqrt(lambda));
-		return std::pow(lambda, 1.0 / power);
+		return std::pow(lambda, invPower);
 	}
 	/// Levels are measured in units of the shape's own surface level (when that is positive), so
 	/// that "touching" is "common level ≤ 1" for every pair; the superellipse family is unchanged.
-	static double LevelUnit(const PosedShape& ps)
+	static double LevelUnit(const PosedShape& ps) { return ps.unit; }
+	/// The level unit of a shape: 1 / its own surface level when that is positive, else 1.
+	static double UnitOf(const Shape& s)
 	{
-		const double own = ps.shape->SurfaceLevel();
+		const double own = s.SurfaceLevel();
 		return own > 0.0 ? 1.0 / own : 1.0;
 	}
 	/// ψ of a (normalised) level value.

@@ -67,7 +67,8 @@ SuperellipseShape::SuperellipseShape(double a, double b, double n, double m, dou
 	        // λ^(1/q) with q = min(n, m)/2 is ‖(|x/a|^{n/q}, |y/b|^{m/q})‖_q squared-like: convex
 	        // (a q-norm of convex non-negative terms) and of degree about 2. The ζ-form is already.
 	        zeta > 0.0 ? 1.0 : std::max(1.0, 0.5 * std::min(n, m))),
-	  m_a(a), m_b(b), m_n(n), m_m(m), m_zeta(zeta), m_nInt(SmallInteger(n)), m_mInt(SmallInteger(m))
+	  m_a(a), m_b(b), m_n(n), m_m(m), m_zeta(zeta), m_nInt(SmallInteger(n)), m_mInt(SmallInteger(m)), m_invA(1.0 / a),
+	  m_invB(1.0 / b), m_gradX(n / a), m_gradY(m / b), m_hessX(n * (n - 1.0) / (a * a)), m_hessY(m * (m - 1.0) / (b * b))
 {
 	// Validation happens before Finalize touches any geometry.
 	const char* what = "superellipse";
@@ -169,7 +170,7 @@ double SuperellipseShape::RootOf(double t, double e)
 
 double SuperellipseShape::Level(Vec2 x) const
 {
-	const double f = PowAbs(x.x / m_a, m_n, m_nInt) + PowAbs(x.y / m_b, m_m, m_mInt);
+	const double f = PowAbs(x.x * m_invA, m_n, m_nInt) + PowAbs(x.y * m_invB, m_m, m_mInt);
 	return m_zeta > 0.0 ? std::pow(f, 1.0 / m_zeta) : f;
 }
 
@@ -177,7 +178,7 @@ LevelDerivatives SuperellipseShape::RawDerivatives(Vec2 x) const
 {
 	// f = |X|^n + |Y|^m with X = x/a, Y = y/b:
 	//   ∂f/∂x = (n/a) sgn(X)|X|^{n−1},  ∂²f/∂x² = n(n−1)/a² |X|^{n−2}   (same for y).
-	const double X = x.x / m_a, Y = x.y / m_b;
+	const double X = x.x * m_invA, Y = x.y * m_invB;
 	const double ax = std::fabs(X), ay = std::fabs(Y);
 	const double xn2 = (m_n < 2.0 && ax == 0.0) ? 0.0 : PowAbs(ax, m_n - 2.0, m_nInt >= 2 ? m_nInt - 2 : -1);
 	const double ym2 = (m_m < 2.0 && ay == 0.0) ? 0.0 : PowAbs(ay, m_m - 2.0, m_mInt >= 2 ? m_mInt - 2 : -1);
@@ -185,9 +186,9 @@ LevelDerivatives SuperellipseShape::RawDerivatives(Vec2 x) const
 	const double ym1 = m_m >= 2.0 ? ym2 * ay : PowAbs(ay, m_m - 1.0, m_mInt >= 1 ? m_mInt - 1 : -1);
 	LevelDerivatives d;
 	d.value = xn1 * ax + ym1 * ay;
-	d.gradient = Vec2(m_n / m_a * Sign(X) * xn1, m_m / m_b * Sign(Y) * ym1);
-	d.hessian.xx = m_n * (m_n - 1.0) / (m_a * m_a) * xn2;
-	d.hessian.yy = m_m * (m_m - 1.0) / (m_b * m_b) * ym2;
+	d.gradient = Vec2(m_gradX * Sign(X) * xn1, m_gradY * Sign(Y) * ym1);
+	d.hessian.xx = m_hessX * xn2;
+	d.hessian.yy = m_hessY * ym2;
 	d.hessian.xy = 0.0;
 	return d;
 }
@@ -255,7 +256,7 @@ bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
 	// in both forms: f^(1/ζ) = 1 where f = 1): A t² + 2 B t + C = 0, A = D² + E², B = X D + Y E,
 	// C = X² + Y² − 1. The larger root (−B + √(B² − A C))/A; where B > 0 it cancels, so it is
 	// computed as −C/(B + √(B² − A C)) there (the product of the roots is C/A).
-	const double X = x.x / m_a, Y = x.y / m_b, D = d.x / m_a, E = d.y / m_b;
+	const double X = x.x * m_invA, Y = x.y * m_invB, D = d.x * m_invA, E = d.y * m_invB;
 	const double A = D * D + E * E, B = X * D + Y * E, C = (X * X + Y * Y) - 1.0;
 	const double disc = B * B - A * C;
 	if (!(A > 0.0) || !(disc >= 0.0) || !std::isfinite(disc))
@@ -275,7 +276,7 @@ bool SuperellipseShape::FarCrossingNewton(Vec2 x, Vec2 d, double& t) const
 	// g' > 0) its first step lands beyond it. For n = m, f^{1/p} is a norm, linear along rays,
 	// and nearly linear along the contact normal, which meets the surface square on: two or three
 	// steps reach rounding there. g' = (f^{1/p}/(p·f))·f', f' = n|u|^{n−1}sgn(u)·D + m|v|^{m−1}sgn(v)·E.
-	const double X = x.x / m_a, Y = x.y / m_b, D = d.x / m_a, E = d.y / m_b;
+	const double X = x.x * m_invA, Y = x.y * m_invB, D = d.x * m_invA, E = d.y * m_invB;
 	const double dd = D * D + E * E;
 	if (!(dd > 0.0) || !std::isfinite(dd) || !std::isfinite(X) || !std::isfinite(Y))
 		return false;
