@@ -19,37 +19,44 @@ struct NewtonPoint
 {
 	Vec2 xi;
 	double m = 0.0;
+	double mu = 1.0; // e^m, kept with m
 	GaugeValue A, B;
 	double r[3] = {0.0, 0.0, 0.0};
 	double relative = 0.0; // residual relative to the size of its terms
 	bool finite = false;
 };
 
-// The residual at a point whose shapes are evaluated, for multiplier e^m (μ enters only here,
-// so trying another multiplier at the same point costs no shape evaluation).
-NewtonPoint WithMultiplier(NewtonPoint p, double m)
+// The residual at a point whose shapes are evaluated, for multiplier μ (it enters only here, so
+// trying another multiplier at the same point costs no shape evaluation): fills r and returns
+// its size relative to the size of its terms.
+double Residual(const NewtonPoint& p, double mu, double r[3])
 {
-	p.m = m;
-	const double mu = std::exp(m);
 	const Vec2 r12 = p.A.grad + mu * p.B.grad;
 	const double r3 = p.A.psi - p.B.psi;
-	p.r[0] = r12.x;
-	p.r[1] = r12.y;
-	p.r[2] = r3;
+	r[0] = r12.x;
+	r[1] = r12.y;
+	r[2] = r3;
 	const double gradScale = LengthSquared(p.A.grad) + mu * mu * LengthSquared(p.B.grad) + 1e-300;
 	const double levelScale = p.A.psi * p.A.psi + p.B.psi * p.B.psi + 1e-300;
-	p.relative = std::sqrt(LengthSquared(r12) / gradScale + r3 * r3 / levelScale);
-	p.finite = p.A.finite && p.B.finite && std::isfinite(mu) && std::isfinite(p.relative);
-	return p;
+	return std::sqrt(LengthSquared(r12) / gradScale + r3 * r3 / levelScale);
 }
 
-NewtonPoint Evaluate(const PairFrame& f, Vec2 xi, double m)
+// Sets the multiplier m = log μ of an evaluated point and its residual. In place: a NewtonPoint
+// holds two gauges with Hessians, and copying it was a visible part of a warm solve.
+void SetMultiplier(NewtonPoint& p, double m, double mu)
 {
-	NewtonPoint p;
+	p.m = m;
+	p.mu = mu;
+	p.relative = Residual(p, mu, p.r);
+	p.finite = p.A.finite && p.B.finite && std::isfinite(mu) && std::isfinite(p.relative);
+}
+
+void Evaluate(const PairFrame& f, Vec2 xi, double m, NewtonPoint& p)
+{
 	p.xi = xi;
 	p.A = f.Eval(f.a, xi, true);
 	p.B = f.Eval(f.b, xi, true);
-	return WithMultiplier(p, m);
+	SetMultiplier(p, m, std::exp(m));
 }
 } // namespace
 
@@ -58,12 +65,17 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 	LevelResult result;
 	result.method = SolveMethod::newton;
 	const double trust = std::max(0.5, 0.5 * Length(f.Xi(f.b.pose.p) - f.Xi(f.a.pose.p)));
-	NewtonPoint p = Evaluate(f, xi, m);
+	// Two points, the current one and the trial, swapped when a trial is accepted.
+	NewtonPoint points[2];
+	NewtonPoint* current = &points[0];
+	NewtonPoint* trial = &points[1];
+	Evaluate(f, xi, m, *current);
 	const int cap = std::max(1, options.maxIterations);
 	double previousMoved = 0.0; // the last full step's length in ξ (0: none yet)
 	bool lastStep = false;      // converged to within the tolerance: one more step, unevaluated
 	for (int it = 1; it <= cap; ++it)
 	{
+		NewtonPoint& p = *current;
 		result.iterations = it;
 		if (!p.finite)
 		{
@@ -78,12 +90,13 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 			const double mLs = muLs > 0.0 ? std::log(muLs) : p.m;
 			if (mLs != p.m && std::isfinite(mLs))
 			{
-				const NewtonPoint q = WithMultiplier(p, mLs);
-				if (q.finite && q.relative < p.relative)
-					p = q;
+				double r[3];
+				const double relative = Residual(p, muLs, r);
+				if (std::isfinite(relative) && relative < p.relative)
+					SetMultiplier(p, mLs, muLs);
 			}
 		}
-		const double mu = std::exp(p.m);
+		const double mu = p.mu;
 		// Jacobian of (∇ψA + μ∇ψB, third equation) with respect to (ξ, m).
 		const Sym22 H = p.A.hess + mu * p.B.hess;
 		const Vec2 dmu = mu * p.B.grad;
@@ -107,6 +120,7 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 			const Vec2 d(delta[0], delta[1]);
 			p.xi = p.xi + d;
 			p.m += delta[2];
+			p.mu = std::exp(p.m);
 			// λ = ψ^q, so dλ = q·λ·dψ/ψ.
 			const double dpsi = Dot(p.A.grad, d);
 			if (p.A.psi > 0.0)
@@ -135,11 +149,11 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 		// there cost forty evaluations for nothing (0.9 % of a hopper's solves did that).
 		const int halvings = p.relative < 1e-9 ? 3 : 40;
 		double alpha = 1.0;
-		NewtonPoint next;
+		NewtonPoint& next = *trial;
 		bool accepted = false;
 		for (int k = 0; k < halvings; ++k, alpha *= 0.5)
 		{
-			next = Evaluate(f, p.xi + alpha * Vec2(delta[0], delta[1]), p.m + alpha * delta[2]);
+			Evaluate(f, p.xi + alpha * Vec2(delta[0], delta[1]), p.m + alpha * delta[2], next);
 			if (next.finite && merit(next) <= (1.0 - 1e-4 * alpha) * merit0)
 			{
 				accepted = true;
@@ -154,9 +168,9 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 			return result;
 		}
 		const double moved = alpha * std::max(std::fabs(delta[0]), std::fabs(delta[1]));
-		p = next;
+		std::swap(current, trial); // p is the previous point from here on
 		const bool full = limit == 1.0 && alpha == 1.0;
-		if ((full && moved <= options.stepTolerance) || p.relative < 1e-15)
+		if ((full && moved <= options.stepTolerance) || current->relative < 1e-15)
 			break;
 		// Quadratic convergence: two full steps δ₁, δ₂ in a row give K ≈ |δ₂|/|δ₁|², and the
 		// error left at the new point is about K·|δ₂|². Where that is below the step tolerance
@@ -175,6 +189,7 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 			return result;
 		}
 	}
+	const NewtonPoint& p = *current;
 	// A solution has opposed gradients; a point where both gradients are tiny (deep inside both
 	// particles) can satisfy the residual test with parallel ones.
 	if (!(Dot(Normalize(p.A.grad), Normalize(p.B.grad)) < -1.0 + 1e-6))
@@ -188,7 +203,7 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 	result.level = p.A.lambda;
 	result.point = f.World(p.xi);
 	result.normal = Normalize(p.A.grad);
-	result.multiplier = std::exp(p.m);
+	result.multiplier = p.mu;
 	return result;
 }
 
@@ -202,8 +217,29 @@ bool GeometricStart(const PairFrame& f, Vec2& xi, double& mu)
 		const Vec2 x = ca + t * (cb - ca);
 		return f.Psi(f.a, x) - f.Psi(f.b, x);
 	};
-	const ScalarResult r = FindRootBrent(phi, 0.0, 1.0, phi(0.0), phi(1.0), 1e-10, 100);
-	xi = ca + r.x * (cb - ca);
+	// A guess from the surfaces' radii along the centre line, rA towards B and rB towards A: where
+	// both ψ are homogeneous of one degree k (superellipses with equal exponents, of one family or
+	// ζ-normalised), ψA = (s/rA)^k and ψB = ((D − s)/rB)^k at distance s from A's centre, so the
+	// root is exactly t = rA/(rA + rB). Otherwise it is a close start and Brent's method only needs
+	// the half of the segment on the far side of the guess.
+	const Vec2 dir = Normalize(f.b.pose.p - f.a.pose.p);
+	const double rA = f.a.shape->RadiusAt(InvRotate(f.a.pose.q, dir), f.a.shape->SurfaceLevel());
+	const double rB = f.b.shape->RadiusAt(InvRotate(f.b.pose.q, -dir), f.b.shape->SurfaceLevel());
+	double t = 0.5;
+	if (rA > 0.0 && rB > 0.0 && std::isfinite(rA + rB))
+		t = rA / (rA + rB);
+	const Vec2 xt = ca + t * (cb - ca);
+	const double psiA = f.Psi(f.a, xt), psiB = f.Psi(f.b, xt);
+	const double phiT = psiA - psiB;
+	if (!(std::fabs(phiT) <= 1e-9 * (psiA + psiB)))
+	{
+		// The tolerance is absolute in t and must stay far below a small particle's share of the
+		// segment (size ratios of 1e5 put the root at t ~ 1e-5).
+		const ScalarResult r = phiT > 0.0 ? FindRootBrent(phi, 0.0, t, phi(0.0), phiT, 1e-10, 100)
+		                                  : FindRootBrent(phi, t, 1.0, phiT, phi(1.0), 1e-10, 100);
+		t = r.x;
+	}
+	xi = ca + t * (cb - ca);
 	const double ga = Length(f.Eval(f.a, xi, false).grad), gb = Length(f.Eval(f.b, xi, false).grad);
 	mu = (ga > 0.0 && gb > 0.0 && std::isfinite(ga / gb)) ? ga / gb : 1.0;
 	return true;
