@@ -243,6 +243,56 @@ TEST_CASE("superellipse: closed-form support points lie on the surface with the 
 	CHECK(Distance(rhombus->Support(Vec2(-1.0, 2.1)), Vec2(0.0, 1.0)) == 0.0); // b·2.1 > a·1
 }
 
+TEST_CASE("superellipse: support bounds enclose the support value found by golden-section search on the surface")
+{
+	// Reference h(d) = max over the surface of x·d, on the exact parametrisation
+	// x = a·sgn(cos s)|cos s|^(2/n), y = b·sgn(sin s)|sin s|^(2/m): the best of 4096 samples, then
+	// golden-section search between its neighbours. It never exceeds the true h.
+	struct Case { double a, b, n, m; };
+	const Case cases[] = {{2.0, 0.7, 2.0, 2.0}, {1.0, 1.0, 2.0, 2.0}, {2.0, 1.0, 4.0, 4.0}, {0.6, 1.9, 8.0, 8.0},
+	                      {1.5, 2.5, 3.0, 5.0}, {1.2, 0.7, 2.5, 3.7}, {1.0, 0.5, 60.0, 60.0}, {1.0, 2.0, 1.5, 1.5},
+	                      {2.0, 1.0, 1.0, 1.0}, {0.9, 1.6, 7.3, 1.5}, {1.0, 3.0, 1.2, 1.9}};
+	Random rng(88);
+	for (const Case& c : cases)
+	{
+		const auto s = MakeSuperellipse(c.a, c.b, c.n, c.m);
+		CAPTURE(s->Describe());
+		auto point = [&](double t) {
+			const double ct = std::cos(t), st = std::sin(t);
+			return Vec2(c.a * std::copysign(std::pow(std::fabs(ct), 2.0 / c.n), ct),
+			            c.b * std::copysign(std::pow(std::fabs(st), 2.0 / c.m), st));
+		};
+		for (int i = 0; i < 100; ++i)
+		{
+			const Vec2 d = rng.LogUniform(1e-2, 1e2) * Rotate(Rot(rng.Angle()), Vec2(1, 0));
+			CAPTURE(d.x);
+			CAPTURE(d.y);
+			const int samples = 4096;
+			int best = 0;
+			for (int k = 1; k < samples; ++k)
+				if (Dot(point(2.0 * kPi * k / samples), d) > Dot(point(2.0 * kPi * best / samples), d))
+					best = k;
+			const double h = GoldenMax([&](double t) { return Dot(point(t), d); }, 2.0 * kPi * (best - 1) / samples,
+			                           2.0 * kPi * (best + 1) / samples);
+			double lower = 0.0, upper = 0.0;
+			s->SupportBounds(d, lower, upper);
+			CHECK(lower <= h);
+			CHECK(h <= upper);
+			CHECK(lower > 0.0);
+			// The bounds' bodies: with e = (a dx, b dy), never looser than the axis points and the box.
+			const double ex = std::fabs(c.a * d.x), ey = std::fabs(c.b * d.y);
+			CHECK(lower >= (1.0 - 2e-12) * std::max(ex, ey));
+			CHECK(upper <= (1.0 + 2e-12) * (ex + ey));
+			// Ellipses: both bounds are the exact support value |e|; a blocky n = m = 4 keeps the
+			// inner ellipse within 2^(1/4) of h (its worst direction is the diagonal).
+			if (c.n == 2.0 && c.m == 2.0)
+				CHECK(upper - lower <= 3e-12 * h);
+			if (c.n == 4.0 && c.m == 4.0)
+				CHECK(lower >= h / std::pow(2.0, 0.25) * (1.0 - 1e-9));
+		}
+	}
+}
+
 TEST_CASE("superellipse: an exponent of 1 makes corners on the axes, reported by CornerAngles")
 {
 	// |x/a| + |y/b|^m has a tangent discontinuity where x = 0, i.e. at polar angles ±π/2, and

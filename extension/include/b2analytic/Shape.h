@@ -143,6 +143,14 @@ public:
 	/// Support point in the body frame: the point of the particle farthest along d
 	/// (for a non-convex shape, the support point of its convex hull). d need not be unit.
 	virtual Vec2 Support(Vec2 d) const;
+	/// Bounds lower ≤ h(d) ≤ upper on the support value h(d) = max over the particle of x·d (body
+	/// frame, d need not be unit), for tests that can often decide without h itself: a separating
+	/// axis is rejected or confirmed by the bounds alone unless the gap lies between them. The
+	/// default is exact (both from Support); shapes with cheap inner and outer bodies override it.
+	virtual void SupportBounds(Vec2 d, double& lower, double& upper) const
+	{
+		lower = upper = Dot(Support(d), d);
+	}
 	/// Tight world AABB of the particle at a pose: it touches the particle on all four sides.
 	/// (Box2D asks for it twice per moving body and step, so shapes with a cheaper form override it.)
 	virtual Box ComputeAABB(const Pose& pose) const;

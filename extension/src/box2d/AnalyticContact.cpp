@@ -41,12 +41,21 @@ Vec2 V(const b2Vec2& v) { return Vec2(v.x, v.y); }
 b2Vec2 F(Vec2 v) { return b2Vec2(float(v.x), float(v.y)); }
 
 // Whether the axis n (unit, from A towards B) separates the particles: B's lowest point along n
-// lies above A's highest, −h_B(−n) − h_A(n) > 0. Two supports, against a solve.
+// lies above A's highest, (cB − cA)·n − h_A(n) − h_B(−n) > 0 with h the support values in the
+// body frames. The shapes' bounds on h decide most pairs (touching ones by the lower bounds,
+// pairs well apart by the upper ones); two supports only in between. All against a solve.
 bool SeparatedAlong(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Vec2 n)
 {
-	const double highA = Dot(WorldSupport(a, pa, n), n);
-	const double lowB = Dot(WorldSupport(b, pb, -n), n);
-	return lowB - highA > 0.0;
+	const Vec2 dA = InvRotate(pa.q, n), dB = InvRotate(pb.q, -n);
+	const double gap = Dot(pb.p - pa.p, n);
+	double lowA, highA, lowB, highB;
+	a.SupportBounds(dA, lowA, highA);
+	b.SupportBounds(dB, lowB, highB);
+	if (!(gap - lowA - lowB > 0.0))
+		return false;
+	if (gap - highA - highB > 0.0)
+		return true;
+	return gap - Dot(a.Support(dA), dA) - Dot(b.Support(dB), dB) > 0.0;
 }
 
 // Write a manifold in Box2D's e_faceA form: normal and the point on A in A's frame, points on B

@@ -429,6 +429,27 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 	return Vec2(m_a * Sign(e.x) * X, m_b * Sign(e.y) * Y);
 }
 
+void SuperellipseShape::SupportBounds(Vec2 d, double& lower, double& upper) const
+{
+	const double ex = std::fabs(m_a * d.x), ey = std::fabs(m_b * d.y);
+	const double ellipse = std::sqrt(ex * ex + ey * ey);
+	lower = std::max(ex, ey);
+	upper = ex + ey;
+	if (m_n >= 2.0 && m_m >= 2.0)
+		lower = ellipse;
+	if (m_n <= 2.0 && m_m <= 2.0)
+		upper = ellipse;
+	// Rounding margins: the tests using the bounds must never be decided by rounding (at n = m = 2
+	// both are the ellipse's; near n = 1 or n = ∞ a bound meets h along the diagonals or axes).
+	lower *= 1.0 - 1e-12;
+	upper *= 1.0 + 1e-12;
+	if (!std::isfinite(upper) || !std::isfinite(lower))
+	{
+		// Overflowing components: the exact value (Support normalises against overflow).
+		lower = upper = Dot(Support(d), d);
+	}
+}
+
 MassProperties SuperellipseShape::ClosedFormMass(double a, double b, double n, double m)
 {
 	// Dirichlet: ∫∫_{u,v≥0, uⁿ+vᵐ≤1} u^{p−1} v^{q−1} = Γ(p/n)Γ(q/m) / (n m Γ(1 + p/n + q/m)).
