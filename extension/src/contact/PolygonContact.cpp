@@ -22,7 +22,15 @@ ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* 
 		c.failure = "a polygon needs at least two vertices";
 		return c;
 	}
-	std::vector<Vec2> w(count);
+	// World vertices: on the stack for Box2D's polygons (at most 8) and segments.
+	Vec2 local[16];
+	std::vector<Vec2> heap;
+	Vec2* w = local;
+	if (count > 16)
+	{
+		heap.resize(count);
+		w = heap.data();
+	}
 	for (int j = 0; j < count; ++j)
 		w[j] = ToWorld(pb, vertices[j]);
 	int evaluations = 0;
@@ -30,12 +38,14 @@ ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* 
 	auto gap = [&](Vec2 n) {
 		++evaluations;
 		double lowest = std::numeric_limits<double>::infinity();
-		for (const Vec2& v : w)
-			lowest = std::min(lowest, Dot(v, n));
+		for (int j = 0; j < count; ++j)
+			lowest = std::min(lowest, Dot(w[j], n));
 		return lowest - Dot(WorldSupport(a, pa, n), n);
 	};
 	double bestAngle = 0.0, best = -std::numeric_limits<double>::infinity();
-	auto consider = [&](Vec2 n) {
+	int bestFace = -1; // the face whose normal gave the best gap (-1: another direction)
+	Vec2 bestNormal;
+	auto consider = [&](Vec2 n, int face) {
 		if (!(LengthSquared(n) > 0.0) || !IsFinite(n))
 			return;
 		n = Normalize(n);
@@ -44,6 +54,8 @@ ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* 
 		{
 			best = g;
 			bestAngle = std::atan2(n.y, n.x);
+			bestFace = face;
+			bestNormal = n;
 		}
 	};
 	// Face normals (pointing into B from A's side: minus the outward normal), both sides of a
@@ -53,25 +65,41 @@ ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* 
 	{
 		const Vec2 e = w[(j + 1) % count] - w[j];
 		const Vec2 outward(e.y, -e.x);
-		consider(-outward);
+		consider(-outward, j);
 		if (count == 2)
-			consider(outward);
-		consider(w[j] - pa.p);
+			consider(outward, j);
+		consider(w[j] - pa.p, -1);
 		centroid += w[j] / double(count);
 	}
-	consider(centroid - pa.p);
+	consider(centroid - pa.p, -1);
 	if (guessNormal)
-		consider(*guessNormal);
+		consider(*guessNormal, -1);
 	for (int k = 0; k < 16; ++k)
-		consider(Vec2(std::cos(kPi * k / 8.0), std::sin(kPi * k / 8.0)));
-	// Refine: the gap is a continuous function of the angle with kinks at face normals.
-	auto negGap = [&](double t) { return -gap(Vec2(std::cos(t), std::sin(t))); };
-	const double span = kPi / 8.0;
-	const ScalarResult m = MinimizeBrent(negGap, bestAngle - span, bestAngle + span, 1e-12, 1e-14, 200);
-	if (-m.fx > best)
+		consider(Vec2(std::cos(kPi * k / 8.0), std::sin(kPi * k / 8.0)), -1);
+	// A face normal that is a local maximum needs no refinement: a particle resting on a wall.
+	// With t = n' (the normal turned by +90°), the gap's one-sided derivatives there are
+	// (v − s_A(n))·t, v the face end that is lowest along n turned slightly that way (the
+	// support value h_A(n) has derivative s_A(n)·t when A is strictly convex). Both pointing
+	// down, the kink is a local maximum, and the search below would only find it again.
+	bool kinkMaximum = false;
+	if (bestFace >= 0 && a.IsSmoothConvex())
 	{
-		best = -m.fx;
-		bestAngle = m.x;
+		const Vec2 t(-bestNormal.y, bestNormal.x);
+		const double s = Dot(WorldSupport(a, pa, bestNormal), t);
+		const double t0 = Dot(w[bestFace], t), t1 = Dot(w[(bestFace + 1) % count], t);
+		kinkMaximum = std::min(t0, t1) - s < 0.0 && std::max(t0, t1) - s > 0.0;
+	}
+	if (!kinkMaximum)
+	{
+		// Refine: the gap is a continuous function of the angle with kinks at face normals.
+		auto negGap = [&](double t) { return -gap(Vec2(std::cos(t), std::sin(t))); };
+		const double span = kPi / 8.0;
+		const ScalarResult m = MinimizeBrent(negGap, bestAngle - span, bestAngle + span, 1e-12, 1e-14, 200);
+		if (-m.fx > best)
+		{
+			best = -m.fx;
+			bestAngle = m.x;
+		}
 	}
 	if (!std::isfinite(best))
 	{
