@@ -67,8 +67,6 @@ private:
 	double LengthHint() const override { return m_a > m_b ? m_a : m_b; }
 	// |t|^e with an integer fast path; e is m_n or m_m, k the matching integer (or -1).
 	static double PowAbs(double t, double e, int k);
-	// t^(1/e) for t ≥ 0, with square-root fast paths for e = 2, 4, 8.
-	static double RootOf(double t, double e);
 	// f and its derivatives (raw sum form, before the ζ transform).
 	LevelDerivatives RawDerivatives(Vec2 x) const;
 	// FarCrossing for exponents other than n = m = 2.

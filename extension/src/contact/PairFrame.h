@@ -2,6 +2,7 @@
 #pragma once
 
 #include "b2analytic/Shape.h"
+#include "numerics/Powers.h"
 
 #include <cmath>
 
@@ -23,7 +24,7 @@ struct PosedShape
 {
 	const Shape* shape; ///< the shape
 	Pose pose;          ///< its pose
-	double unit;        ///< PairFrame::LevelUnit of the shape (1 / its own level), computed once
+	double unit;        ///< PairFrame::UnitOf the shape (1 / its own level), computed once
 };
 
 /// Centres closer than 1e-12 of the pair's mean bounding radius: no level point lies between
@@ -112,20 +113,11 @@ struct PairFrame
 		if (q == 1.0) return lambda;
 		return lambda > 0.0 ? PsiOfPositive(lambda) : 0.0;
 	}
-	/// λ^{1/q} for λ > 0: square roots for the commonest powers (q = 2: ellipses and n = 4;
-	/// q = 4: n = 8), pow otherwise.
-	double PsiOfPositive(double lambda) const
-	{
-		if (power == 2.0)
-			return std::sqrt(lambda);
-		if (power == 4.0)
-			return std::sqrt(std::sqrt(lambda));
-		return std::pow(lambda, invPower);
-	}
-	/// Levels are measured in units of the shape's own surface level (when that is positive), so
-	/// that "touching" is "common level ≤ 1" for every pair; the superellipse family is unchanged.
-	static double LevelUnit(const PosedShape& ps) { return ps.unit; }
-	/// The level unit of a shape: 1 / its own surface level when that is positive, else 1.
+	/// λ^{1/q} for λ > 0 (square roots for the commonest powers q = 2, 4, 8).
+	double PsiOfPositive(double lambda) const { return RootOf(lambda, power); }
+	/// The level unit of a shape: 1 / its own surface level when that is positive, else 1. Levels
+	/// are measured in these units, so that "touching" is "common level ≤ 1" for every pair; the
+	/// superellipse family is unchanged.
 	static double UnitOf(const Shape& s)
 	{
 		const double own = s.SurfaceLevel();

@@ -34,17 +34,19 @@ ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* 
 	for (int j = 0; j < count; ++j)
 		w[j] = ToWorld(pb, vertices[j]);
 	int evaluations = 0;
+	Vec2 support; // A's support point along the last n the gap was taken for
 	// Gap along n: B's lowest vertex along n minus A's highest point along n.
 	auto gap = [&](Vec2 n) {
 		++evaluations;
 		double lowest = std::numeric_limits<double>::infinity();
 		for (int j = 0; j < count; ++j)
 			lowest = std::min(lowest, Dot(w[j], n));
-		return lowest - Dot(WorldSupport(a, pa, n), n);
+		support = WorldSupport(a, pa, n);
+		return lowest - Dot(support, n);
 	};
 	double bestAngle = 0.0, best = -std::numeric_limits<double>::infinity();
 	int bestFace = -1; // the face whose normal gave the best gap (-1: another direction)
-	Vec2 bestNormal;
+	Vec2 bestNormal, bestSupport;
 	auto consider = [&](Vec2 n, int face) {
 		if (!(LengthSquared(n) > 0.0) || !IsFinite(n))
 			return;
@@ -56,6 +58,7 @@ ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* 
 			bestAngle = std::atan2(n.y, n.x);
 			bestFace = face;
 			bestNormal = n;
+			bestSupport = support;
 		}
 	};
 	// Face normals (pointing into B from A's side: minus the outward normal), both sides of a
@@ -85,7 +88,7 @@ ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* 
 	if (bestFace >= 0 && a.IsSmoothConvex())
 	{
 		const Vec2 t(-bestNormal.y, bestNormal.x);
-		const double s = Dot(WorldSupport(a, pa, bestNormal), t);
+		const double s = Dot(bestSupport, t);
 		const double t0 = Dot(w[bestFace], t), t1 = Dot(w[(bestFace + 1) % count], t);
 		kinkMaximum = std::min(t0, t1) - s < 0.0 && std::max(t0, t1) - s > 0.0;
 	}

@@ -109,7 +109,7 @@ LevelResult RunScaleNewton(const PairFrame& f, Vec2 xi, double trust, const Solv
 	}
 	result.status = SolveStatus::converged;
 	result.failure = "";
-	result.level = p.A.lambda / PairFrame::LevelUnit(f.a); // A's level in its own units, as the grid reports
+	result.level = p.A.lambda / f.a.unit; // A's level in its own units, as the grid reports
 	result.point = f.World(p.xi);
 	result.normal = p.na;
 	result.multiplier = -Dot(p.A.grad, p.B.grad) / LengthSquared(p.B.grad);

@@ -1,6 +1,7 @@
 // b2analytic: superellipse family with closed forms.
 #include "b2analytic/SuperellipseShape.h"
 
+#include "numerics/Powers.h"
 #include "numerics/RootFinding.h"
 
 #include <algorithm>
@@ -153,19 +154,6 @@ inline double SuperellipseShape::PowAbs(double t, double e, int k)
 		k >>= 1;
 	}
 	return r;
-}
-
-double SuperellipseShape::RootOf(double t, double e)
-{
-	// t^(1/e) for t ≥ 0: square roots for the exponents 2, 4 and 8 (ellipses and the blocky
-	// superellipses of the demos), pow otherwise.
-	if (e == 2.0)
-		return std::sqrt(t);
-	if (e == 4.0)
-		return std::sqrt(std::sqrt(t));
-	if (e == 8.0)
-		return std::sqrt(std::sqrt(std::sqrt(t)));
-	return std::pow(t, 1.0 / e);
 }
 
 double SuperellipseShape::Level(Vec2 x) const
