@@ -24,6 +24,7 @@
 #include "ContactReference.h"
 
 #include <map>
+#include <tuple>
 #include <vector>
 
 using namespace b2a;
@@ -42,12 +43,17 @@ struct Posed
 
 Posed Heart(double alpha, Vec2 p, double angle) { return {MakeHeart(alpha), ref::RefShape::Heart(alpha), Pose(p, angle)}; }
 Posed Circle(double r, Vec2 p) { return {MakeCircle(r), ref::RefShape::Circle(r), Pose(p, 0.2)}; }
+Posed Diamond(double a, double b, Vec2 p, double angle)
+{
+	return {MakeSuperellipse(a, b, 1.0, 1.0), ref::RefShape::Super(a, b, 1.0L, 1.0L), Pose(p, angle)};
+}
 
 // Dense surface samples, computed once per distinct reference shape.
 const ref::Curve& DenseCurve(const ref::RefShape& s)
 {
-	static std::map<std::pair<int, long double>, ref::Curve> cache;
-	const auto key = std::make_pair(int(s.kind), s.kind == ref::RefShape::Kind::heart ? s.alpha : s.a);
+	static std::map<std::tuple<int, long double, long double, long double, long double>, ref::Curve> cache;
+	const auto key = s.kind == ref::RefShape::Kind::heart ? std::make_tuple(int(s.kind), s.alpha, 0.0L, 0.0L, 0.0L)
+	                                                      : std::make_tuple(int(s.kind), s.a, s.b, s.n, s.m);
 	auto it = cache.find(key);
 	if (it == cache.end())
 		it = cache.emplace(key, ref::SampleCurve(s, s.Own(), 200000)).first;
@@ -200,5 +206,82 @@ TEST_CASE("hearts: a heart's tip pointing at a circle gives the axis as the norm
 			CHECK(std::fabs(r.separation - gap) <= 1e-6);
 			CHECK(MaxDiff(r.pointA, ToWorld(ph, Vec2(0.0, -1.0))) <= 1e-6);
 			CHECK(MaxDiff(r.pointB, pc.p - 0.3 * axis) <= 1e-6);
+		}
+}
+
+TEST_CASE("hearts: minima at a cusp of either curve and at random poses match the brute force")
+{
+	// The refinement has three paths: Newton along B's curve (smooth minima), B's corner with a
+	// Newton search on either side of it, and the crossing of A's corner ray (A's level runs in
+	// a V-shaped valley along its tip axis, where Newton has no curvature to use). Each
+	// configuration below puts the minimum on one of them; the random poses mix all three.
+	std::vector<NamedPair> cases;
+	for (double turn : {0.0, 0.9, -2.3})
+	{
+		// A's tip points at a big circle, slightly off its centre line: the minimum is where A's
+		// tip axis crosses the circle.
+		const Posed a = Heart(1.0, {0.0, 0.0}, turn);
+		const Vec2 axis = Rotate(a.pose.q, Vec2(0.0, -1.0)), side = Perp(axis);
+		cases.push_back({"A's tip at a circle", a, Circle(1.0, 2.05 * axis + 0.15 * side), false});
+		// B's tip points at A: the minimum is B's corner sample.
+		const Posed b = Heart(0.7, {0.3, 0.2}, turn);
+		const Vec2 bAxis = Rotate(b.pose.q, Vec2(0.0, -1.0));
+		cases.push_back({"B's tip at a circle", Circle(0.5, b.pose.p + 1.45 * bAxis + 0.05 * Perp(bAxis)), b, false});
+		cases.push_back({"B's tip at a heart", Heart(1.0, b.pose.p + 2.1 * bAxis, turn + 0.4), b, false});
+	}
+	Random rng(2026);
+	for (int i = 0; i < 24; ++i)
+	{
+		const double angle = rng.Angle(), distance = rng.Uniform(0.6, 2.6);
+		cases.push_back({"random hearts", Heart(1.0, {0.0, 0.0}, rng.Angle()),
+		                 Heart(0.7, distance * Vec2(std::cos(angle), std::sin(angle)), rng.Angle()), false});
+	}
+	for (const NamedPair& p : cases)
+		for (const bool swap : {false, true})
+		{
+			const Posed& a = swap ? p.b : p.a;
+			const Posed& b = swap ? p.a : p.b;
+			INFO(std::string(p.name) << (swap ? " (swapped)" : "") << " at " << b.pose.p.x << ", " << b.pose.p.y);
+			const ref::SurfaceMinResult want = BruteForce(a, b);
+			const LevelResult r = SolveGridScale(*a.shape, a.pose, *b.shape, b.pose);
+			REQUIRE(r.Ok());
+			CHECK(std::fabs(LD(r.level) - want.value) <= LevelTol(a, want.value));
+			CHECK(std::fabs(RelativeLevel(*b.shape, b.pose, r.point) - 1.0) <= 2e-10);
+		}
+}
+
+TEST_CASE("grid: a contact on a diamond's edge next to its vertex refines past the vertex sample")
+{
+	// The samples crowd a vertex (half of them follow turning), so its neighbours lie within
+	// about 1e-4 of it. A small circle whose nearest edge point lies between the vertex and its
+	// neighbour makes the vertex the lowest sample while the minimum is on the straight edge
+	// beside it: the refinement must leave the corner (Newton from the neighbour, on the edge).
+	// Its level there is below the vertex's by (s/R)² ~ 1e-7 for an offset s ~ 3e-5, a hundred
+	// times the tolerance.
+	const Posed b = Diamond(0.8, 0.6, {0.1, -0.2}, 0.4);
+	const auto samples = b.shape->Samples();
+	int vertex = 0;
+	for (int k = 0; k < samples->Count(); ++k)
+		if (std::fabs(samples->angle[k]) < std::fabs(samples->angle[vertex]))
+			vertex = k;
+	REQUIRE(samples->angle[vertex] == 0.0); // the vertex (0.8, 0) is a sample
+	const Vec2 v = samples->point[vertex], next = samples->point[vertex + 1];
+	const double gap = Distance(v, next);
+	CHECK(gap < 1e-3);
+	const Vec2 edge = Normalize(next - v), outward = -Perp(edge); // the edge's outward normal
+	for (double fraction : {0.2, 0.35, 0.5})
+		for (double radius : {0.02, 0.05})
+		{
+			// The circle touches the edge's line at the foot v + fraction·gap·edge, from outside.
+			const Vec2 foot = v + fraction * gap * edge;
+			const Posed a = Circle(radius, ToWorld(b.pose, foot + 1.001 * radius * outward));
+			INFO("fraction " << fraction << " radius " << radius);
+			const ref::SurfaceMinResult want = BruteForce(a, b);
+			const LevelResult r = SolveGridScale(*a.shape, a.pose, *b.shape, b.pose);
+			REQUIRE(r.Ok());
+			const double vertexLevel = a.shape->Level(ToBody(a.pose, ToWorld(b.pose, v)));
+			CHECK(double(vertexLevel - want.value) > 100.0 * LevelTol(a, want.value)); // the vertex is not it
+			CHECK(std::fabs(LD(r.level) - want.value) <= LevelTol(a, want.value));
+			CHECK(Distance(r.point, ToWorld(b.pose, foot)) <= 1e-7);
 		}
 }

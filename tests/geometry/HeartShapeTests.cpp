@@ -195,3 +195,36 @@ TEST_CASE("heart: area and moments agree with an independent polar integral and 
 		CHECK(RelativeError(mp.area, count * cell * cell) < 1e-3);
 	}
 }
+
+TEST_CASE("heart: LevelLowerBound is below the level everywhere on the disc, and close where the disc is far")
+{
+	// Reference: the smallest level over 40 rings of 120 points covering the disc, and its centre.
+	Random rng(31);
+	for (double alpha : {0.3, 1.0, 4.0})
+	{
+		const auto h = MakeHeart(alpha);
+		const double R = h->BoundingRadius();
+		for (int i = 0; i < 300; ++i)
+		{
+			const Vec2 c(rng.Uniform(-3.0 * R, 3.0 * R), rng.Uniform(-3.0 * R, 3.0 * R));
+			const double r = rng.LogUniform(1e-3 * R, R);
+			double lowest = h->Level(c);
+			for (int ring = 1; ring <= 40; ++ring)
+				for (int k = 0; k < 120; ++k)
+				{
+					const double t = 2.0 * kPi * k / 120.0;
+					lowest = std::min(lowest, h->Level(c + (r * ring / 40.0) * Vec2(std::cos(t), std::sin(t))));
+				}
+			const double bound = h->LevelLowerBound(c, r);
+			CAPTURE(alpha);
+			CAPTURE(c.x);
+			CAPTURE(c.y);
+			CAPTURE(r);
+			CHECK(bound <= lowest + 1e-12 * std::fabs(lowest));
+			// Small discs far from the centre: within a few radii of the truth (α ~ |x|², so the
+			// bound loses about 2|c|r + the cube-root term's spread).
+			if (r < 0.01 * R && Length(c) > R)
+				CHECK(lowest - bound <= 10.0 * r * (Length(c) + 1.0));
+		}
+	}
+}

@@ -239,3 +239,36 @@ TEST_CASE("surface samples: the same whatever other shapes and counts were sampl
 		CHECK(twinDefault->maxDeviation == freshDefault->maxDeviation);
 	}
 }
+
+TEST_CASE("surface samples: each run's disc encloses its stretch of the curve")
+{
+	// The grid method skips a run when A's level is provably high over its disc, so the disc must
+	// hold every point of the curve between the run's first and last sample, not only the samples.
+	for (const ShapeCase& c : AllShapeKinds())
+	{
+		CAPTURE(c.name);
+		const Shape& s = *c.shape;
+		for (int count : kCounts)
+		{
+			CAPTURE(count);
+			const auto smp = s.Samples(count);
+			const int L = SurfaceSamples::kRunLength;
+			REQUIRE(int(smp->runCentre.size()) == (count + L - 1) / L);
+			REQUIRE(smp->runRadius.size() == smp->runCentre.size());
+			double slack = 1e300; // the tightest margin seen: the discs are not needlessly large
+			for (size_t g = 0; g < smp->runCentre.size(); ++g)
+			{
+				const int first = int(g) * L, last = std::min(first + L, count);
+				double t0 = smp->angle[first], t1 = smp->angle[last % count];
+				if (t1 <= t0) t1 += 2.0 * kPi;
+				double reach = 0.0;
+				for (int q = 0; q <= 64 * (last - first); ++q)
+					reach = std::max(reach, Distance(s.SurfacePoint(t0 + (t1 - t0) * q / (64.0 * (last - first))), smp->runCentre[g]));
+				CHECK(reach <= smp->runRadius[g]);
+				slack = std::min(slack, smp->runRadius[g] / reach);
+			}
+			if (count >= 64)
+				CHECK(slack < 1.5);
+		}
+	}
+}

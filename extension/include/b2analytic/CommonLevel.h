@@ -46,10 +46,14 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 
 /// Grid method (paper section 3): B held at its level `levelB` (its own surface level when NaN),
 /// the smallest level of A over B's surface samples, then refined between the neighbouring
-/// samples by a bracketed root of d/dθ λA(X_B(θ)) (or a Brent minimisation where the minimum
-/// sits on a corner), so that the answer is exact to rounding rather than to the sample spacing.
-/// The lowest `gridCandidates` local minima are refined, so that shapes with several local
-/// minima (the heart's cleft) get the global one. `point` lies on B's surface.
+/// samples so that the answer is exact to rounding rather than to the sample spacing: Newton on
+/// ∇λA + μ∇λB = 0, λB = levelB from the sample; at a corner of B the corner or a smooth minimum
+/// beside it; where a corner ray of A (the heart's tip axis, a valley of λA) crosses the bracket,
+/// the crossing; otherwise a bracketed root of d/dθ λA(X_B(θ)) or a Brent minimisation. The
+/// lowest `gridCandidates` local minima are refined, so that shapes with several local minima
+/// (the heart's cleft) get the global one. At B's own level, runs of samples whose disc A's
+/// LevelLowerBound puts above the lowest level found are skipped (they cannot hold the minimum),
+/// so a particle's far side costs one bound per run. `point` lies on B's surface.
 LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                            const SolverOptions& options = {}, double levelB = 0.0 / 0.0);
 

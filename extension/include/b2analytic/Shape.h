@@ -4,6 +4,7 @@
 #include "b2analytic/Math.h"
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -78,6 +79,15 @@ struct SurfaceSamples
 	double maxSpacing = 0.0;    ///< largest distance between consecutive samples
 	double maxDeviation = 0.0;  ///< largest measured distance from the true curve to the sample polygon
 
+	/// Discs enclosing runs of the curve: run g spans the arcs from sample g·kRunLength to sample
+	/// (g+1)·kRunLength (cyclic; the last run may be shorter). The radius covers the samples and
+	/// the measured deviation of the curve between them, twice over. The grid method skips a run
+	/// where a lower bound of A's level over its disc exceeds a level it has already found.
+	std::vector<Vec2> runCentre;
+	std::vector<double> runRadius; ///< radius of each run's disc
+	/// Arcs per run.
+	static constexpr int kRunLength = 8;
+
 	/// Number of samples.
 	int Count() const { return int(point.size()); }
 	/// The angles of sample k's two neighbours, unwrapped so that lo < angle[k] < hi: the bracket
@@ -143,6 +153,15 @@ public:
 	/// Support point in the body frame: the point of the particle farthest along d
 	/// (for a non-convex shape, the support point of its convex hull). d need not be unit.
 	virtual Vec2 Support(Vec2 d) const;
+	/// A lower bound of the level over the disc |x − centre| ≤ radius (body frame), for the grid
+	/// method's pruning of surface runs that cannot hold the minimum. The default, −∞, means no
+	/// bound: every sample is evaluated. Shapes whose level is costly (the heart) override it.
+	virtual double LevelLowerBound(Vec2 centre, double radius) const
+	{
+		(void)centre;
+		(void)radius;
+		return -std::numeric_limits<double>::infinity();
+	}
 	/// Bounds lower ≤ h(d) ≤ upper on the support value h(d) = max over the particle of x·d (body
 	/// frame, d need not be unit), for tests that can often decide without h itself: a separating
 	/// axis is rejected or confirmed by the bounds alone unless the gap lies between them. The

@@ -3,6 +3,7 @@
 
 #include "contact/PairFrame.h"
 #include "numerics/RootFinding.h"
+#include "numerics/SmallLinear.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,7 +49,119 @@ struct SurfaceWalk
 	}
 };
 
-// Refine the sample minimum between its neighbours (angles lo < mid < hi).
+// Newton on the stationarity conditions of min λA over B's level-LB curve, in A's body frame:
+//   ∇λA(y) + μ∇λB(y) = 0,  λB(y) − LB = 0,
+// Jacobian [[HA + μHB, ∇λB], [∇λBᵀ, 0]]. Its tangential block tᵀ(HA + μHB)t, t ⟂ ∇λB, is the
+// second derivative of λA along the curve (the μHB term carries the curve's bending), so it must
+// stay positive for a minimum. Starts at sample `start` (on the curve) and converges
+// quadratically; each step costs two derivative evaluations where the Brent search on the slope
+// costs a radius solve per evaluation. Returns false (the caller then brackets) when the
+// tangential curvature is not positive, a step leaves the neighbours' chord, the iteration cap
+// is reached, or the answer lies outside (lo, hi) or above the sample's value: at corners and
+// where two minima share a bracket.
+bool RefineNewton(const SurfaceWalk& walk, double lo, double hi, double mid, Vec2 start, double startValue,
+                  double reach, double& theta, double& value, Vec2& point)
+{
+	const Rot q = walk.bInA.q;
+	Vec2 y = ToWorld(walk.bInA, start);
+	const double tolerance = 1e-13 * (Length(start) + reach);
+	double mu = 0.0;
+	bool first = true;
+	for (int it = 0; it < 12; ++it)
+	{
+		++walk.evaluations;
+		const LevelDerivatives dA = walk.a.Derivatives(y);
+		const LevelDerivatives dB = walk.b.Derivatives(ToBody(walk.bInA, y));
+		const Vec2 gB = Rotate(q, dB.gradient);
+		const Sym22 HB = Rotate(q, dB.hessian);
+		const double gB2 = LengthSquared(gB);
+		if (!(gB2 > 0.0) || !std::isfinite(gB2) || !IsFinite(dA.gradient))
+			return false;
+		if (first)
+			mu = -Dot(dA.gradient, gB) / gB2; // least squares of ∇λA + μ∇λB = 0
+		first = false;
+		const Sym22 H{dA.hessian.xx + mu * HB.xx, dA.hessian.xy + mu * HB.xy, dA.hessian.yy + mu * HB.yy};
+		const Vec2 t = Perp(gB);
+		const double curvature = t.x * (H.xx * t.x + H.xy * t.y) + t.y * (H.xy * t.x + H.yy * t.y);
+		if (!(curvature > 0.0) || !std::isfinite(curvature))
+			return false;
+		const double J[3][3] = {{H.xx, H.xy, gB.x}, {H.xy, H.yy, gB.y}, {gB.x, gB.y, 0.0}};
+		const double r[3] = {-(dA.gradient.x + mu * gB.x), -(dA.gradient.y + mu * gB.y), -(dB.value - walk.levelB)};
+		const Solve3Result s = Solve3(J, r);
+		if (!(s.rcond > 1e-14))
+			return false;
+		const Vec2 step(s.x[0], s.x[1]);
+		const double stepLength = Length(step);
+		if (!(stepLength <= reach))
+			return false;
+		y += step;
+		mu += s.x[2];
+		if (stepLength <= tolerance)
+		{
+			const Vec2 x = ToBody(walk.bInA, y);
+			const double t = mid + std::remainder(std::atan2(x.y, x.x) - mid, 2.0 * kPi);
+			++walk.evaluations;
+			const double v = walk.a.Level(y);
+			if (!(t >= lo && t <= hi) || !(v <= startValue))
+				return false;
+			theta = t;
+			value = v;
+			point = x;
+			return true;
+		}
+	}
+	return false;
+}
+
+// True when the polar angle is one of the shape's corners (samples sit on corners exactly).
+bool IsCorner(const Shape& s, double theta)
+{
+	for (double c : s.CornerAngles())
+		if (std::fabs(std::remainder(theta - c, 2.0 * kPi)) < 1e-12)
+			return true;
+	return false;
+}
+
+// Where B's level-LB curve crosses the ray of one of A's corners (A's body frame) between the
+// neighbours pl and ph of a sample. Along that ray λA is not differentiable: at the heart's tip
+// it runs in a V-shaped valley, λA ≈ smooth + c|s|^{2/3} across it, so the crossing is a local
+// minimum of λA along B's curve that Newton, which needs curvature, cannot converge to. The
+// crossing is the root of λB − LB along the ray, bracketed by the neighbours' projections.
+bool CornerRayCrossing(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double& value, Vec2& point)
+{
+	bool found = false;
+	for (double corner : walk.a.CornerAngles())
+	{
+		const Vec2 u(std::cos(corner), std::sin(corner));
+		const double cl = Cross(u, pl), ch = Cross(u, ph);
+		if (!(cl * ch <= 0.0) || !(Dot(u, pl) > 0.0 || Dot(u, ph) > 0.0))
+			continue;
+		const double margin = Distance(pl, ph);
+		const double s0 = std::max(0.0, std::min(Dot(u, pl), Dot(u, ph)) - margin);
+		const double s1 = std::max(Dot(u, pl), Dot(u, ph)) + margin;
+		auto g = [&](double s) {
+			++walk.evaluations;
+			return walk.b.Level(ToBody(walk.bInA, s * u)) - walk.levelB;
+		};
+		const double g0 = g(s0), g1 = g(s1);
+		if (!(g0 * g1 <= 0.0))
+			continue;
+		const ScalarResult r = FindRootBrent(g, s0, s1, g0, g1, 0.0, 200);
+		const Vec2 y = r.x * u;
+		++walk.evaluations;
+		const double v = walk.a.Level(y);
+		if (v < value)
+		{
+			value = v;
+			point = ToBody(walk.bInA, y);
+			found = true;
+		}
+	}
+	return found;
+}
+
+// Refine the sample minimum between its neighbours (angles lo < mid < hi) by bracketing: a root
+// of the slope where it changes sign, else a Brent minimisation of the value.
 void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double& value)
 {
 	const double slo = walk.Slope(lo), shi = walk.Slope(hi);
@@ -76,6 +189,46 @@ void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double
 		theta = t;
 	}
 }
+
+// Refine sample k, a local minimum of the samples, to the minimum of λA along B's curve between
+// its neighbours: Newton from the sample on smooth stretches; at B's corners the corner or a
+// smooth minimum beside it; where A's corner ray crosses the bracket, the crossing (Newton has
+// no curvature there); anything else, the bracketing search.
+template <typename SamplePoint>
+void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int k, const SamplePoint& samplePoint,
+                     double& theta, double& value, Vec2& point)
+{
+	const int n = samples.Count();
+	double lo, hi;
+	samples.NeighbourAngles(k, lo, hi);
+	const Vec2 pl = samplePoint((k + n - 1) % n), ph = samplePoint((k + 1) % n);
+	const double reach = Distance(pl, ph);
+	const double sampleTheta = theta, sampleValue = value;
+	if (IsCorner(walk.b, sampleTheta))
+	{
+		// B's corner: its curve has no tangent there, so Newton cannot start on it. The corner
+		// is the minimum unless a smooth minimum lies beside it, lower, within the bracket (an
+		// edge of a diamond touched next to its vertex); Newton from each neighbour looks there.
+		double t, v;
+		Vec2 x;
+		if (RefineNewton(walk, lo, sampleTheta, 0.5 * (lo + sampleTheta), pl, value, reach, t, v, x) && v < value)
+			theta = t, value = v, point = x;
+		if (RefineNewton(walk, sampleTheta, hi, 0.5 * (sampleTheta + hi), ph, value, reach, t, v, x) && v < value)
+			theta = t, value = v, point = x;
+		return;
+	}
+	if (RefineNewton(walk, lo, hi, sampleTheta, point, sampleValue, reach, theta, value, point))
+		return;
+	const Pose& bInA = walk.bInA;
+	if (CornerRayCrossing(walk, ToWorld(bInA, pl), ToWorld(bInA, ph), value, point))
+	{
+		theta = std::atan2(point.y, point.x);
+		return;
+	}
+	Refine(walk, lo, hi, theta, value);
+	if (theta != sampleTheta)
+		point = walk.b.SurfacePoint(theta, walk.levelB);
+}
 } // namespace
 
 LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
@@ -89,25 +242,83 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	SurfaceWalk walk{a, b, Relative(pa, pb), LB};
 
 	// Level of A at every sample of B's surface (the paper's grid).
-	std::vector<double> value(n);
+	// Unevaluated samples stay at +∞.
+	std::vector<double> value(n, std::numeric_limits<double>::infinity());
 	const bool ownLevel = LB == b.SurfaceLevel();
-	for (int k = 0; k < n; ++k)
-	{
+	auto evaluate = [&](int k) {
 		const Vec2 p = ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB);
 		value[k] = a.Level(ToWorld(walk.bInA, p));
-		if (std::isnan(value[k]))
+		return !std::isnan(value[k]);
+	};
+	bool ok = true;
+	const int runs = int(samples->runCentre.size());
+	std::vector<std::pair<double, int>> order;
+	if (ownLevel && runs > 0)
+	{
+		// Branch and bound over runs of samples: runs in the order of A's lower bound over their
+		// discs, each evaluated whole, until a run's bound exceeds the lowest level found so far.
+		// The skipped runs cannot hold anything lower (the bound covers the curve between the
+		// samples too), so the minima refined below are those of the full scan.
+		order.reserve(runs);
+		for (int g = 0; g < runs; ++g)
 		{
-			result.failure = "grid: a level value is NaN (check the shape functions)";
-			return result;
+			const double bound = a.LevelLowerBound(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]);
+			if (!(bound > -std::numeric_limits<double>::infinity()))
+			{
+				order.clear(); // no bound from this shape: scan everything
+				break;
+			}
+			order.emplace_back(bound, g);
 		}
 	}
-	// Local minima of the cyclic sequence, lowest first.
+	if (!order.empty())
+	{
+		std::sort(order.begin(), order.end());
+		double lowest = std::numeric_limits<double>::infinity();
+		for (const auto& [bound, g] : order)
+		{
+			if (bound > lowest)
+				break;
+			const int first = g * SurfaceSamples::kRunLength, last = std::min(first + SurfaceSamples::kRunLength, n);
+			for (int k = first; k <= last && ok; ++k)
+				if (value[k % n] == std::numeric_limits<double>::infinity())
+				{
+					ok = evaluate(k % n);
+					lowest = std::min(lowest, value[k % n]);
+				}
+		}
+	}
+	else
+	{
+		for (int k = 0; k < n && ok; ++k)
+			ok = evaluate(k);
+	}
+	if (!ok)
+	{
+		result.failure = "grid: a level value is NaN (check the shape functions)";
+		return result;
+	}
+	// Local minima of the cyclic sequence, lowest first. At the edge of a skipped run the
+	// neighbour is evaluated first, so that the edge is a minimum only if it is one.
 	std::vector<int> minima;
+	const double unset = std::numeric_limits<double>::infinity();
+	const std::vector<double> scanned = value; // the edges' neighbours join `value` but not the scan
 	for (int k = 0; k < n; ++k)
 	{
-		const double prev = value[(k + n - 1) % n], next = value[(k + 1) % n];
-		if (value[k] <= prev && value[k] < next)
+		if (scanned[k] == unset)
+			continue;
+		const int before = (k + n - 1) % n, after = (k + 1) % n;
+		if (value[before] == unset)
+			ok = ok && evaluate(before);
+		if (value[after] == unset)
+			ok = ok && evaluate(after);
+		if (value[k] <= value[before] && value[k] < value[after])
 			minima.push_back(k);
+	}
+	if (!ok)
+	{
+		result.failure = "grid: a level value is NaN (check the shape functions)";
+		return result;
 	}
 	if (minima.empty())
 		minima.push_back(int(std::min_element(value.begin(), value.end()) - value.begin()));
@@ -115,18 +326,21 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	if (int(minima.size()) > options.gridCandidates)
 		minima.resize(std::max(1, options.gridCandidates));
 
-	double bestTheta = samples->angle[minima[0]], bestValue = value[minima[0]];
+	auto samplePoint = [&](int k) { return ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB); };
+	double bestValue = value[minima[0]];
+	Vec2 bestPoint = samplePoint(minima[0]);
 	for (int k : minima)
 	{
 		double lo, hi;
 		samples->NeighbourAngles(k, lo, hi);
 		double theta = samples->angle[k], v = value[k];
+		Vec2 point = samplePoint(k);
 		if (options.gridRefine)
-			Refine(walk, lo, hi, theta, v);
+			RefineCandidate(walk, *samples, k, samplePoint, theta, v, point);
 		if (v < bestValue)
 		{
 			bestValue = v;
-			bestTheta = theta;
+			bestPoint = point;
 		}
 	}
 	if (!std::isfinite(bestValue))
@@ -134,7 +348,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		result.failure = "grid: no finite level of A on B's surface";
 		return result;
 	}
-	const Vec2 X = ToWorld(pb, b.SurfacePoint(bestTheta, LB));
+	const Vec2 X = ToWorld(pb, bestPoint);
 	Vec2 normal = Rotate(pa.q, a.Gradient(ToBody(pa, X)));
 	if (!(LengthSquared(normal) > 0.0) || !IsFinite(normal))
 		normal = -Rotate(pb.q, b.Gradient(ToBody(pb, X))); // A's centre on B's surface: use B's normal

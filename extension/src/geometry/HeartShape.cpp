@@ -57,6 +57,17 @@ LevelDerivatives HeartShape::Derivatives(Vec2 x) const
 	return d;
 }
 
+double HeartShape::LevelLowerBound(Vec2 centre, double radius) const
+{
+	// Over |x − c| ≤ ρ: x² ≥ dx² and y² ≥ dy² with d = (|c| − ρ)₊ per axis. The cusp term
+	// −|x|^{2/3} y ≥ −(|cx| + ρ)^{2/3} (cy + ρ) where the disc reaches y > 0, and where it lies
+	// below the x axis it adds at least dx^{2/3} |cy + ρ|.
+	const double dx = std::max(std::fabs(centre.x) - radius, 0.0), dy = std::max(std::fabs(centre.y) - radius, 0.0);
+	const double top = centre.y + radius;
+	const double reach = top > 0.0 ? std::fabs(centre.x) + radius : dx;
+	return dx * dx + dy * dy - std::cbrt(reach * reach) * top;
+}
+
 double HeartShape::RadiusAt(Vec2 u, double level) const
 {
 	// Along x = t·u: α(x) = t² − k t^{5/3} with k = cbrt(ux² uy³). With s = t^{1/3}:

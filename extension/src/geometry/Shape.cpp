@@ -337,6 +337,25 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 			out->maxDeviation = std::max(out->maxDeviation, DistanceToSegment(mid, out->point[k], out->point[j]));
 		}
 	}
+	// 4. Run discs: the centre of the run's sample box, the radius to its farthest sample plus
+	//    twice the deviation of the curve from the sample polygon.
+	for (int first = 0; first < n; first += SurfaceSamples::kRunLength)
+	{
+		const int last = std::min(first + SurfaceSamples::kRunLength, n); // sample index, mod n
+		Vec2 lower = out->point[first], upper = lower;
+		for (int k = first + 1; k <= last; ++k)
+		{
+			const Vec2 p = out->point[k % n];
+			lower = Vec2(std::min(lower.x, p.x), std::min(lower.y, p.y));
+			upper = Vec2(std::max(upper.x, p.x), std::max(upper.y, p.y));
+		}
+		const Vec2 centre = 0.5 * (lower + upper);
+		double radius = 0.0;
+		for (int k = first; k <= last; ++k)
+			radius = std::max(radius, Distance(centre, out->point[k % n]));
+		out->runCentre.push_back(centre);
+		out->runRadius.push_back(radius + 2.0 * out->maxDeviation);
+	}
 	m_samples.emplace_back(count, out);
 	return out;
 }
