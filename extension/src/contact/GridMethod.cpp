@@ -293,11 +293,6 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		for (int k = 0; k < n && ok; ++k)
 			ok = evaluate(k);
 	}
-	if (!ok)
-	{
-		result.failure = "grid: a level value is NaN (check the shape functions)";
-		return result;
-	}
 	// Local minima of the cyclic sequence, lowest first. At the edge of a skipped run the
 	// neighbour is evaluated first, so that the edge is a minimum only if it is one.
 	std::vector<int> minima;
@@ -309,7 +304,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			continue;
 		const int before = (k + n - 1) % n, after = (k + 1) % n;
 		if (value[before] == unset)
-			ok = ok && evaluate(before);
+			ok = ok && evaluate(before); // a NaN stops all evaluation; reported below
 		if (value[after] == unset)
 			ok = ok && evaluate(after);
 		if (value[k] <= value[before] && value[k] < value[after])
