@@ -13,7 +13,8 @@ using ContactFunction = ContactResult (*)(const Shape& a, const Pose& pa, const 
                                           const SolverOptions& options, WarmStart* warm);
 
 /// The contact between A and B (see ContactResult for its meaning).
-///  - automatic: the dispatch table: closed form for circle pairs; Newton on the common level
+///  - automatic: the dispatch table: closed form for circle pairs; Perram and Wertheim's
+///    one-dimensional form for ellipse pairs (EllipseContact); Newton on the common level
 ///    (warm-started from `warm`) with the min–max fallback for smooth, strictly convex pairs;
 ///    the grid method with refinement, run both ways, for non-smooth or non-convex shapes.
 ///  - newton: the common level by Newton alone (fails for shapes it cannot handle).
@@ -49,6 +50,10 @@ ContactFunction GetContactFunction(ShapeFamily a, ShapeFamily b);
 /// The table's building blocks, usable in a user's own registrations.
 /// Closed form for two circles.
 ContactResult CircleContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
+/// Two plain ellipses (or an ellipse and a circle): Perram and Wertheim's one-dimensional
+/// common level, points in closed form; the same answer as ConvexContact, sooner. Other shapes
+/// and the rare cases it does not handle go to ConvexContact.
+ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
 /// Common level (Newton + min–max fallback) for smooth convex shapes; grid otherwise.
 ContactResult ConvexContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
 /// Grid method both ways with refinement, for any shapes.

@@ -20,12 +20,6 @@ Sym22 LevelMatrix(const SuperellipseShape& s, const Pose& p)
 
 double Quad(const Sym22& m, Vec2 v) { return Dot(v, m * v); }
 
-// H⁻¹v for a symmetric positive definite 2×2 H, by its adjugate.
-Vec2 SolveSpd(const Sym22& h, Vec2 v, double& det)
-{
-	det = h.xx * h.yy - h.xy * h.xy;
-	return Vec2(h.yy * v.x - h.xy * v.y, h.xx * v.y - h.xy * v.x) / det;
-}
 } // namespace
 
 const SuperellipseShape* AsPlainEllipse(const Shape& s)
@@ -33,77 +27,111 @@ const SuperellipseShape* AsPlainEllipse(const Shape& s)
 	if (s.Family() != ShapeFamily::ellipse && s.Family() != ShapeFamily::circle)
 		return nullptr;
 	// The class is final: comparing the dynamic type is exact and costs less than a dynamic_cast
-	// (two per contact between ellipses).
-	const auto* e = typeid(s) == typeid(SuperellipseShape) ? static_cast<const SuperellipseShape*>(&s) : nullptr;
-	// n = m = 2 with the level f itself (ζ = 0) or f^(1/1) (ζ = 1).
-	return e && e->N() == 2.0 && e->M() == 2.0 && (e->Zeta() == 0.0 || e->Zeta() == 1.0) ? e : nullptr;
+	// (two per contact between ellipses). A superellipse is in these families exactly when
+	// n = m = 2, with the level f itself (ζ = 0) or f^(1/1) (ζ = 1, the only ζ with n = 2ζ = 2);
+	// another Shape subclass may claim the family, hence the type test.
+	return typeid(s) == typeid(SuperellipseShape) ? static_cast<const SuperellipseShape*>(&s) : nullptr;
 }
 
 LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
-                                  const WarmStart* warm)
+                                  const WarmStart* warm, EllipsePairPoints* points)
 {
+	if (points)
+		points->valid = false;
 	// Perram–Wertheim: F(s) = min_x (1 − s)·λA(x) + s·λB(x) is concave in s ∈ [0, 1] and its
 	// maximum is the common level C (both particles scaled by √C about their centres touch).
 	// With H(s) = (1 − s)MA + s·MB the minimiser solves H·x = s·MB·r (x from A's centre, r the
 	// centre offset), and by the envelope theorem F'(s) = h(s) = λB(x) − λA(x), which falls from
 	// λB(cA) > 0 at s = 0 to −λA(cB) < 0 at s = 1; its root is the maximiser, where λA = λB = C.
 	// Differentiating H·x = s·MB·r: H·x' = MB(r − x) + MA·x = −(∇λB − ∇λA)/2, so
-	// h'(s) = (∇λB − ∇λA)·x' = −½ dᵀH⁻¹d with d = ∇λB − ∇λA: negative, and Newton on h from a
-	// bracket that bisection keeps converges quadratically. At the root (1 − s)∇λA + s∇λB = 0,
+	// h'(s) = (∇λB − ∇λA)·x' = −½ dᵀH⁻¹d with d = ∇λB − ∇λA: negative, so h has one root, which
+	// Halley's method below finds from a bracket that bisection keeps. At the root (1 − s)∇λA + s∇λB = 0,
 	// so the multiplier of ∇λA + μ∇λB = 0 (and of the ψ = √λ gradients, equal at λA = λB) is
 	// s/(1 − s). Each step is a 2×2 solve: no shape evaluation.
 	LevelResult r;
 	r.method = SolveMethod::ellipsePair;
 	const Sym22 MA = LevelMatrix(a, pa), MB = LevelMatrix(b, pb);
+	const Sym22 G{MB.xx - MA.xx, MB.xy - MA.xy, MB.yy - MA.yy}; // dH/ds
 	const Vec2 rc = pb.p - pa.p;
 	if (!(LengthSquared(rc) > 0.0))
 	{
 		r.failure = "coincident centres: no common-level point between them";
 		return r;
 	}
-	// Start: the circles' answer with each ellipse's radius along the centre line (exact for
-	// circles), or the previous step's multiplier.
-	const Vec2 u = Normalize(rc);
-	const double rhoA = 1.0 / std::sqrt(Quad(MA, u)), rhoB = 1.0 / std::sqrt(Quad(MB, u));
-	double s = rhoB / (rhoA + rhoB);
+	// Start: the previous step's multiplier, or the circles' answer with each ellipse's radius
+	// along the centre line (exact for circles).
+	double s = 0.5;
 	if (warm && warm->valid && warm->multiplier > 0.0 && std::isfinite(warm->multiplier))
+	{
 		s = warm->multiplier / (1.0 + warm->multiplier);
+	}
+	else
+	{
+		const Vec2 u = Normalize(rc);
+		const double rhoA = 1.0 / std::sqrt(Quad(MA, u)), rhoB = 1.0 / std::sqrt(Quad(MB, u));
+		s = rhoB / (rhoA + rhoB);
+	}
+	// Halley's method on h, which the second derivative makes cheap: differentiating
+	// H·x' = −d/2 once more gives H·x'' = G·w with w = H⁻¹d and G = MB − MA, and
+	//   h'' = d'·x' + d·x'' = ½ wᵀG w + wᵀG w = (3/2) wᵀG w   (d' = 2G·x' = −G·w).
+	// With c = h''/(2h') and the Newton step δ = −h/h' the Halley step is δ/(1 + cδ), cubically
+	// convergent: a warm start 1e-3 off is at 1e-9 after one step and done after the second.
+	// Newton's error after δ is |c|·δ², and Halley's is smaller still: once that is below 1e-17
+	// of s (or of 1 − s), the step is the last, taken without a further solve (x moves by
+	// x'·δ = −½w·δ, exact to |x''|δ² ~ 1e-17 of the size). Steps leaving the bracket bisect it.
+	const Vec2 mbrc = MB * rc;
 	double lo = 0.0, hi = 1.0;
-	Vec2 x;
-	double lamA = 0.0, lamB = 0.0;
-	for (int it = 1; it <= 100; ++it)
+	Vec2 x, w;          // x(s) and w = H⁻¹d at the last solved s
+	double solvedAt = s; // that s
+	for (int it = 1;; ++it)
 	{
 		r.iterations = it;
 		const Sym22 H = (1.0 - s) * MA + s * MB;
-		double det = 0.0;
-		x = SolveSpd(H, s * (MB * rc), det);
-		if (!(det > 0.0) || !IsFinite(x))
+		const double det = H.xx * H.yy - H.xy * H.xy;
+		if (!(det > 0.0))
 		{
 			r.failure = "ellipse pair: singular weighted level matrix";
 			return r;
 		}
-		lamA = Quad(MA, x);
-		lamB = Quad(MB, x - rc);
-		const double h = lamB - lamA;
+		const double inv = 1.0 / det;
+		const Vec2 rhs = s * mbrc;
+		x = inv * Vec2(H.yy * rhs.x - H.xy * rhs.y, H.xx * rhs.y - H.xy * rhs.x);
+		solvedAt = s;
+		const Vec2 gA = MA * x, gB = MB * (x - rc);
+		const double h = Dot(x - rc, gB) - Dot(x, gA);
+		const Vec2 d = 2.0 * (gB - gA);
+		w = inv * Vec2(H.yy * d.x - H.xy * d.y, H.xx * d.y - H.xy * d.x);
+		if (!std::isfinite(h)) // (a non-finite x or w makes h non-finite too)
+		{
+			r.failure = "ellipse pair: non-finite answer";
+			return r;
+		}
 		if (h > 0.0) lo = s;
 		else if (h < 0.0) hi = s;
 		else break;
-		const Vec2 d = 2.0 * (MB * (x - rc) - MA * x);
-		const double slope = -0.5 * Dot(d, SolveSpd(H, d, det));
-		// Quadratic convergence: a Newton step of 1e-9 relative leaves an error of ~1e-18, below
-		// what the rounding of h resolves, so it is the last one. (Near the root h is rounding
-		// noise whose sign may be wrong: testing the step against the bracket there would throw
-		// a converged s into bisection of the whole bracket.)
+		const double slope = -0.5 * Dot(d, w);
 		const double relativeTo = std::min(s, 1.0 - s);
-		const double newtonStep = slope < 0.0 ? -h / slope : 0.0;
-		if (slope < 0.0 && std::fabs(newtonStep) <= 1e-9 * relativeTo)
+		double next = 0.5 * (lo + hi); // bisection unless the step below stays in the bracket
+		if (slope < 0.0)
 		{
-			s += newtonStep;
-			break;
+			// δ = −h/h', c·δ = −hQ'/h'² with Q' = 0.75 wᵀGw = h''/2, and the Halley step
+			// δ/(1 + cδ) = −h·h'/(h'² − h·Q'): one division, a chain of them being what a warm
+			// solve waits for. Where |cδ| ≥ ½ (far from the root) the Newton step is taken.
+			const double q = 0.75 * Quad(G, w);
+			const double slope2 = slope * slope, hq = h * q;
+			const bool halleyOk = std::fabs(hq) < 0.5 * slope2;
+			const double step = halleyOk ? -h * slope / (slope2 - hq) : -h / slope;
+			// Converged: Newton's error |c|δ² = |h²Q'|/|h'|³ at most 1e-17 of s (or 1 − s).
+			// (Near the root h is rounding noise whose sign may be wrong: the converged step is not
+			// tested against the bracket, or a converged s would bisect the whole bracket.)
+			if (halleyOk && std::fabs(hq * h) <= 1e-17 * relativeTo * std::fabs(slope2 * slope))
+			{
+				s += step;
+				break;
+			}
+			if (s + step > lo && s + step < hi)
+				next = s + step;
 		}
-		double next = s + newtonStep;
-		if (!(slope < 0.0) || !(next > lo && next < hi))
-			next = 0.5 * (lo + hi); // outside the bracket: bisect
 		s = next;
 		if (hi - lo <= 4e-16 * relativeTo)
 			break;
@@ -117,23 +145,46 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 	// for 1000:1 needles), and its entries mix 1/a² and 1/b² through the rotation, so double
 	// rounding there would cost the point up to 1e-10 of the size: elongated pairs finish in long
 	// double. Up to aspect 4 the condition is at most 16 and double keeps the point to ~1e-15.
-	const double aspectA = std::max(a.A(), a.B()) / std::min(a.A(), a.B());
-	const double aspectB = std::max(b.A(), b.B()) / std::min(b.A(), b.B());
+	auto moderate = [](const SuperellipseShape& e) { return std::max(e.A(), e.B()) <= 4.0 * std::min(e.A(), e.B()); };
 	Vec2 gA;            // MA·x, half of ∇λA: the normal's direction
+	Vec2 normal;        // its unit vector, once computed
 	Vec2 point;         // the world point
 	double level = 0.0; // F(s): flat at the maximum, so s's rounding hardly moves it
-	bool usable = true; // the double finish also checks its solve and λB
-	if (std::max(aspectA, aspectB) <= 4.0)
+	double lamA = 0.0;
+	if (moderate(a) && moderate(b))
 	{
-		const Sym22 H = (1.0 - s) * MA + s * MB;
-		double det = 0.0;
-		x = SolveSpd(H, s * (MB * rc), det);
+		x = x - (0.5 * (s - solvedAt)) * w; // x(s) from the last solve, x' = −½w
 		gA = MA * x;
 		lamA = Dot(x, gA);
-		lamB = Quad(MB, x - rc);
-		usable = det > 0.0 && std::isfinite(lamB);
+		const Vec2 gB = MB * (x - rc);
+		const double lamB = Dot(x - rc, gB);
 		level = (1.0 - s) * lamA + s * lamB;
 		point = pa.p + x;
+		if (points && LengthSquared(gA) > 0.0)
+		{
+			// ContactFromLevel's points, from what is at hand: along the line X + t·n, λA is
+			// λA(X) + 2t·n·MA·x + t²·nᵀMA·n, and likewise for B along −n. The larger root of each
+			// quadratic is the far crossing (the on-surface rule and the root's form as in
+			// SuperellipseShape::FarCrossing); a level within 1e-10 of 1 is its own crossing.
+			normal = Normalize(gA);
+			const Vec2 n = normal;
+			auto crossing = [&](const Sym22& M, Vec2 dir, Vec2 g, double lam, Vec2& at) {
+				if (std::fabs(lam - 1.0) <= 1e-10)
+				{
+					at = point;
+					return true;
+				}
+				const double qa = Quad(M, dir), qb = Dot(dir, g), qc = lam - 1.0;
+				const double disc = qb * qb - qa * qc;
+				if (!(qa > 0.0) || !(disc >= 0.0) || !std::isfinite(disc))
+					return false;
+				const double root = std::sqrt(disc);
+				const double t = qb > 0.0 ? -qc / (qb + root) : (root - qb) / qa;
+				at = point + t * dir;
+				return std::isfinite(t);
+			};
+			points->valid = crossing(MA, n, gA, lamA, points->a) && crossing(MB, -n, gB, lamB, points->b);
+		}
 	}
 	else
 	{
@@ -176,7 +227,7 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 		level = double((1 - sl) * levelA + sl * levelB);
 		point = Vec2(double(pa.p.x + LD(px)), double(pa.p.y + LD(py)));
 	}
-	if (!usable || !IsFinite(x) || !std::isfinite(lamA) || !(LengthSquared(gA) > 0.0))
+	if (!IsFinite(x) || !std::isfinite(level) || !std::isfinite(lamA) || !(LengthSquared(gA) > 0.0))
 	{
 		r.failure = "ellipse pair: non-finite answer";
 		return r;
@@ -184,7 +235,7 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 	r.status = SolveStatus::converged;
 	r.level = level;
 	r.point = point;
-	r.normal = Normalize(gA);
+	r.normal = LengthSquared(normal) > 0.0 ? normal : Normalize(gA);
 	r.multiplier = s / (1.0 - s);
 	return r;
 }

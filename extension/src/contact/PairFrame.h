@@ -31,7 +31,8 @@ struct PosedShape
 /// them, and the solvers that need one say so.
 inline bool CentresCoincide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb)
 {
-	return !(Distance(pa.p, pb.p) > 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius()));
+	const double tiny = 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius());
+	return !(LengthSquared(pb.p - pa.p) > tiny * tiny); // squared: no root on every contact
 }
 
 /// Two posed shapes in the frame X = origin + scale·ξ, with origin between the centres and scale

@@ -20,10 +20,18 @@ inline bool NewtonApplies(const Shape& a, const Shape& b, LevelResult& failure)
 class SuperellipseShape;
 /// The shape as a plain ellipse or circle (n = m = 2, level f or f^1), else null.
 const SuperellipseShape* AsPlainEllipse(const Shape& s);
-/// Common level of two plain ellipses by Newton on Perram–Wertheim's one-dimensional form
-/// (EllipsePairLevel.cpp), warm-started from the previous multiplier.
+/// The surface points of an ellipse pair on the line through the level point along the normal
+/// (ContactFromLevel's pointA and pointB), where the level solve gives them at little cost.
+struct EllipsePairPoints
+{
+	Vec2 a, b;          ///< on A's surface, on B's
+	bool valid = false; ///< false: compute them as ContactFromLevel does
+};
+/// Common level of two plain ellipses by Halley's method on Perram–Wertheim's one-dimensional
+/// form (EllipsePairLevel.cpp), warm-started from the previous multiplier; fills `points` when
+/// given and the pair is solved in double (aspect ratios up to 4).
 LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
-                                  const WarmStart* warm);
+                                  const WarmStart* warm, EllipsePairPoints* points = nullptr);
 
 /// Newton–Raphson on the common level from (ξ, m = log μ) in a PairFrame; `level` is λA there.
 LevelResult RunNewton(const PairFrame& frame, Vec2 xi, double m, const SolverOptions& options);
