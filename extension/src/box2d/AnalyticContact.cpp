@@ -131,7 +131,29 @@ bool AnalyticContact::Install()
 AnalyticContact::AnalyticContact(b2Fixture* a, int32 indexA, b2Fixture* b, int32 indexB, Kind kind)
 	: b2Contact(a, indexA, b, indexB), m_kind(kind)
 {
-	if (kind == Kind::polygonCircle && AnalyticProxyShape::From(a->GetShape()))
+	const AnalyticProxyShape* pa = AnalyticProxyShape::From(a->GetShape());
+	const AnalyticProxyShape* pb = kind == Kind::polygonCircle ? nullptr : AnalyticProxyShape::From(b->GetShape());
+	auto side = [](const AnalyticProxyShape* proxy) {
+		Side s;
+		if (proxy)
+			s = Side{proxy->Data().shape.get(), proxy->Data().local, proxy->Data().shape->BoundingRadius(), proxy->m_radius};
+		return s;
+	};
+	m_sideA = side(pa);
+	m_sideB = side(pb);
+	if (pa && pb)
+	{
+		m_patchTolerance = std::min(pa->Data().patchTolerance, pb->Data().patchTolerance);
+		m_patchMinWidth = std::min(pa->Data().patchMinWidth, pb->Data().patchMinWidth);
+	}
+	else if (pa || pb)
+	{
+		m_patchTolerance = (pa ? pa : pb)->Data().patchTolerance;
+		m_patchMinWidth = (pa ? pa : pb)->Data().patchMinWidth;
+	}
+	if (pa)
+		m_solver = pa->Data().solver;
+	if (kind == Kind::polygonCircle && pa)
 	{
 		const b2CircleShape* circle = static_cast<const b2CircleShape*>(b->GetShape());
 		if (circle->m_radius > 0.0f)
@@ -188,11 +210,7 @@ bool SameTransform(const b2Transform& x, const b2Transform& y)
 AnalyticContact* AnalyticContact::FromAnalytic(b2Contact* contact)
 {
 	AnalyticContact* c = dynamic_cast<AnalyticContact*>(contact);
-	if (!c)
-		return nullptr;
-	const bool analyticA = AnalyticProxyShape::From(c->m_fixtureA->GetShape()) != nullptr;
-	const bool analyticB = c->m_kind != Kind::polygonCircle && AnalyticProxyShape::From(c->m_fixtureB->GetShape()) != nullptr;
-	return analyticA || analyticB ? c : nullptr;
+	return c && (c->m_sideA.shape || c->m_sideB.shape) ? c : nullptr;
 }
 
 void AnalyticContact::Prepare()
@@ -205,11 +223,7 @@ void AnalyticContact::Prepare()
 
 void AnalyticContact::Evaluate(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB)
 {
-	const b2Shape* sa = m_fixtureA->GetShape();
-	const b2Shape* sb = m_fixtureB->GetShape();
-	const AnalyticProxyShape* pa = AnalyticProxyShape::From(sa);
-	const AnalyticProxyShape* pb = m_kind == Kind::polygonCircle ? nullptr : AnalyticProxyShape::From(sb);
-	if (!pa && !pb)
+	if (!m_sideA.shape && !m_sideB.shape)
 	{
 		EvaluatePlain(manifold, xfA, xfB);
 		return;
@@ -228,26 +242,24 @@ void AnalyticContact::Evaluate(b2Manifold* manifold, const b2Transform& xfA, con
 
 void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB)
 {
-	const b2Shape* sa = m_fixtureA->GetShape();
-	const b2Shape* sb = m_fixtureB->GetShape();
-	const AnalyticProxyShape* pa = AnalyticProxyShape::From(sa);
-	const AnalyticProxyShape* pb = m_kind == Kind::polygonCircle ? nullptr : AnalyticProxyShape::From(sb);
+	const Side& pa = m_sideA;
+	const Side& pb = m_sideB;
 	manifold->pointCount = 0;
 	const Pose bodyA = ToPose(xfA), bodyB = ToPose(xfB);
 	ContactResult c;
 	ManifoldSide sideA, sideB;
-	double radii = 0.0, tolerance = 0.0, minWidth = 0.0;
+	double radii = 0.0;
 	Vec2 vertices[b2_maxPolygonVertices];
 
-	if (pa && pb)
+	if (pa.shape && pb.shape)
 	{
 		// Analytic against analytic: the contact core, warm-started from the last step.
-		const Pose poseA = pa->WorldPose(xfA), poseB = pb->WorldPose(xfB);
+		const Pose poseA = Compose(bodyA, pa.local), poseB = Compose(bodyB, pb.local);
 		// Bounding circles apart: no contact, and no solve. The tight AABBs of the broad phase
 		// overlap for many pairs whose particles are apart (elongated ones especially).
-		const Shape& shapeA = *pa->Data().shape;
-		const Shape& shapeB = *pb->Data().shape;
-		const double reach = shapeA.BoundingRadius() + shapeB.BoundingRadius();
+		const Shape& shapeA = *pa.shape;
+		const Shape& shapeB = *pb.shape;
+		const double reach = pa.radius + pb.radius;
 		const Vec2 between = poseB.p - poseA.p;
 		if (LengthSquared(between) > reach * reach)
 			return;
@@ -260,7 +272,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		const double distance = Length(between);
 		if (distance > 0.0 && SeparatedAlong(shapeA, poseA, shapeB, poseB, between / distance))
 			return;
-		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, pa->Data().solver, &m_warm);
+		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, m_solver, &m_warm);
 		if (c.Ok())
 		{
 			m_lastNormal = c.normal;
@@ -268,36 +280,33 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		}
 		sideA = {&shapeA, poseA};
 		sideB = {&shapeB, poseB};
-		tolerance = std::min(pa->Data().patchTolerance, pb->Data().patchTolerance);
-		minWidth = std::min(pa->Data().patchMinWidth, pb->Data().patchMinWidth);
 	}
-	else if (pa && m_kind == Kind::polygonCircle)
+	else if (pa.shape && m_kind == Kind::polygonCircle)
 	{
 		// Analytic against a Box2D circle: the circle as an analytic circle at its centre. Box2D
 		// subtracts the circle's radius itself, so B's manifold point is the centre.
 		if (!m_circle)
 			return;
-		const b2CircleShape* circle = static_cast<const b2CircleShape*>(sb);
-		const Pose poseA = pa->WorldPose(xfA);
+		const b2CircleShape* circle = static_cast<const b2CircleShape*>(m_fixtureB->GetShape());
+		const Pose poseA = Compose(bodyA, pa.local);
 		const Pose poseC(ToWorld(bodyB, V(circle->m_p)), bodyB.q);
-		c = ComputeContact(*pa->Data().shape, poseA, *m_circle, poseC, MethodChoice::automatic, pa->Data().solver, &m_warm);
+		c = ComputeContact(*pa.shape, poseA, *m_circle, poseC, MethodChoice::automatic, m_solver, &m_warm);
 		if (!c.Ok())
 			return;
 		c.pointB = poseC.p;
 		radii = circle->m_radius;
-		sideA = {pa->Data().shape.get(), poseA};
+		sideA = {pa.shape, poseA};
 		sideB.point = true;
-		tolerance = pa->Data().patchTolerance;
-		minWidth = pa->Data().patchMinWidth;
 	}
 	else
 	{
 		// One analytic side against a Box2D polygon, edge or chain link: the separating axis
 		// against its core geometry; Box2D adds the skin radius.
-		const bool analyticIsA = pa != nullptr;
-		const AnalyticProxyShape* proxy = analyticIsA ? pa : pb;
-		const b2Shape* plain = analyticIsA ? sb : sa;
-		const Pose poseAnalytic = proxy->WorldPose(analyticIsA ? xfA : xfB);
+		const bool analyticIsA = pa.shape != nullptr;
+		const Side& proxy = analyticIsA ? pa : pb;
+		const b2Shape* sa = m_fixtureA->GetShape();
+		const b2Shape* plain = analyticIsA ? m_fixtureB->GetShape() : sa;
+		const Pose poseAnalytic = Compose(analyticIsA ? bodyA : bodyB, proxy.local);
 		const Pose posePlain = analyticIsA ? bodyB : bodyA;
 		int count = 0;
 		if (m_kind == Kind::polygonPolygon)
@@ -321,13 +330,13 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 				// centroid, not the shape's origin: a heart's origin lies well below its centroid.
 				const Vec2 e = vertices[1] - vertices[0];
 				const Vec2 front(e.y, -e.x);
-				const Vec2 centroid = ToWorld(poseAnalytic, proxy->Data().shape->Mass().centroid);
+				const Vec2 centroid = ToWorld(poseAnalytic, proxy.shape->Mass().centroid);
 				if (Dot(ToBody(posePlain, centroid) - vertices[0], front) < 0.0)
 					return;
 			}
 		}
 		const Vec2* guess = m_hasNormal ? &m_lastNormal : nullptr;
-		c = ComputePolygonContact(*proxy->Data().shape, poseAnalytic, vertices, count, posePlain, guess);
+		c = ComputePolygonContact(*proxy.shape, poseAnalytic, vertices, count, posePlain, guess);
 		if (!c.Ok())
 			return;
 		m_lastNormal = c.normal;
@@ -335,9 +344,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		for (int j = 0; j < count; ++j)
 			vertices[j] = ToWorld(posePlain, vertices[j]);
 		radii = plain->m_radius;
-		tolerance = proxy->Data().patchTolerance;
-		minWidth = proxy->Data().patchMinWidth;
-		ManifoldSide analytic{proxy->Data().shape.get(), poseAnalytic};
+		ManifoldSide analytic{proxy.shape, poseAnalytic};
 		ManifoldSide polygon;
 		polygon.vertices = vertices;
 		polygon.count = count;
@@ -355,8 +362,8 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	}
 	if (!c.Ok())
 		return; // a failed solve (never NaN) gives no contact this step
-	Write(BuildContactManifold(c, sideA, sideB, tolerance, minWidth, radii, &m_patch), manifold, xfA, xfB, pa ? sa->m_radius : 0.0,
-	      pb ? sb->m_radius : 0.0);
+	Write(BuildContactManifold(c, sideA, sideB, m_patchTolerance, m_patchMinWidth, radii, &m_patch), manifold, xfA, xfB, pa.skin,
+	      pb.skin);
 }
 
 } // namespace b2a

@@ -49,7 +49,21 @@ private:
 	// The analytic path (at least one analytic fixture).
 	void EvaluateAnalytic(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB);
 
+	// An analytic fixture's data as the contact needs it, copied when Box2D creates the contact:
+	// a fixture's analytic data never changes and outlives its contacts, and reading it through
+	// fixture, proxy shape and data block cost a cache miss per side on every step.
+	struct Side
+	{
+		const Shape* shape = nullptr; // null: a plain Box2D shape
+		Pose local;                   // the shape's pose in its body
+		double radius = 0.0;          // its bounding radius
+		double skin = 0.0;            // the proxy polygon's skin (b2_polygonRadius)
+	};
+
 	Kind m_kind;
+	Side m_sideA, m_sideB;
+	double m_patchTolerance = 0.0, m_patchMinWidth = 0.0; // the analytic sides' (the smaller of two)
+	SolverOptions m_solver;                                // A's, where A is analytic
 	WarmStart m_warm;       // Newton's previous solution (analytic pairs)
 	Vec2 m_lastNormal;      // previous normal, world (a guess against polygons, a separating axis to try between analytic particles)
 	bool m_hasNormal = false;
