@@ -84,12 +84,16 @@ struct ContactResult
 };
 
 /// A previous solution to start Newton from (warm start across time steps). `localPoint` is the
-/// touching point in A's body frame, so it follows A when both particles move together.
+/// touching point in A's body frame, so it follows A when both particles move together;
+/// `localPointB`, the same point in B's frame, lets a solver predict where the point went when B
+/// moved relative to A.
 struct WarmStart
 {
 	bool valid = false;      ///< false: start from the geometric guess
 	Vec2 localPoint;         ///< previous touching point in A's body frame
 	double multiplier = 1.0; ///< previous LevelResult::multiplier
+	bool hasPointB = false;  ///< localPointB is set (solvers that do not record it clear this)
+	Vec2 localPointB;        ///< previous touching point in B's body frame
 };
 
 /// Tuning of the solvers; the defaults suit every use in the library.

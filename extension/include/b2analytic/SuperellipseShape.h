@@ -6,6 +6,18 @@
 namespace b2a
 {
 
+/// The constants of a superellipse's raw level f = |x/a|^n + |y/b|^m that every evaluation of f
+/// and its derivatives needs, computed once per shape (a division costs as much as several
+/// products). The contact solvers evaluate f inline from them (geometry/SuperellipseTerms.h).
+struct SuperellipseTerms
+{
+	double n = 2.0, m = 2.0;         ///< the exponents
+	int nInt = 2, mInt = 2;          ///< n and m as small integers (0 to 64), or -1
+	double invA = 1.0, invB = 1.0;   ///< 1/a, 1/b
+	double gradX = 2.0, gradY = 2.0; ///< n/a, m/b: ∂f/∂x = gradX·sgn(x)|x/a|^{n−1}
+	double hessX = 2.0, hessY = 2.0; ///< n(n−1)/a², m(m−1)/b²: ∂²f/∂x² = hessX·|x/a|^{n−2}
+};
+
 /// Superellipse particle |x/a|^n + |y/b|^m ≤ 1 (paper eq. 2), with any real exponents n, m ≥ 1.
 /// Its level function is f(x) = |x/a|^n + |y/b|^m, so the level-C set is the particle
 /// "rescaled" to C (for n ≠ m the level sets are not similar copies: C is a measure, not a
@@ -58,6 +70,8 @@ public:
 	bool IsNormalised() const { return m_zeta > 0.0; }
 	/// ζ of the normalised form (0 when not normalised).
 	double Zeta() const { return m_zeta; }
+	/// The constants of the raw level f (before the ζ transform), for inline evaluation.
+	const SuperellipseTerms& Terms() const { return m_terms; }
 
 	/// Closed-form area 4ab Γ(1+1/n)Γ(1+1/m)/Γ(1+1/n+1/m) and second moments.
 	static MassProperties ClosedFormMass(double a, double b, double n, double m);
@@ -65,19 +79,10 @@ public:
 private:
 	SuperellipseShape(double a, double b, double n, double m, double zeta);
 	double LengthHint() const override { return m_a > m_b ? m_a : m_b; }
-	// |t|^e with an integer fast path; e is m_n or m_m, k the matching integer (or -1).
-	static double PowAbs(double t, double e, int k);
-	// f and its derivatives (raw sum form, before the ζ transform).
-	LevelDerivatives RawDerivatives(Vec2 x) const;
-	// FarCrossing for exponents other than n = m = 2.
-	bool FarCrossingNewton(Vec2 x, Vec2 d, double& t) const;
 
 	double m_a, m_b, m_n, m_m;
-	double m_zeta;       // > 0 for the normalised form
-	int m_nInt, m_mInt;  // exponents as small integers, or -1
-	// Constants of every level query, computed once (a division costs as much as several products):
-	// 1/a, 1/b, and the derivative factors n/a, m/b, n(n−1)/a², m(m−1)/b².
-	double m_invA, m_invB, m_gradX, m_gradY, m_hessX, m_hessY;
+	double m_zeta; // > 0 for the normalised form
+	SuperellipseTerms m_terms;
 };
 
 /// Ellipse x²/a² + y²/b² ≤ 1 (a superellipse with n = m = 2).

@@ -6,6 +6,7 @@
 #include "contact/PairFrame.h"
 #include "contact/ResultChecks.h"
 #include "contact/SolverCore.h"
+#include "geometry/SuperellipseTerms.h"
 #include "numerics/RootFinding.h"
 
 #include <algorithm>
@@ -316,12 +317,7 @@ ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, con
 	const LevelResult level = CheckedResult(SolveEllipsePairLevel(*ea, pa, *eb, pb, warm, &points));
 	if (!level.Ok() || !(level.multiplier > 0.0))
 		return ConvexContact(a, pa, b, pb, options, warm);
-	if (warm)
-	{
-		warm->valid = true;
-		warm->localPoint = ToBody(pa, level.point);
-		warm->multiplier = level.multiplier;
-	}
+	RecordWarmStart(warm, pa, pb, level);
 	ContactResult c = ContactOfLevel(level);
 	c.normal = level.normal;
 	if (points.valid)
@@ -334,6 +330,49 @@ ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, con
 	{
 		return ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
 	}
+	SetSeparation(c, level.level <= 1.0);
+	return c;
+}
+
+ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                                  WarmStart* warm)
+{
+	// What SolveCommonLevel and ContactFromLevel do for two smooth superellipses, with the levels
+	// evaluated inline and the normal from the solve's last gradients; anything else, and what
+	// the fast solve does not finish, takes the generic path (which decides as before).
+	const SuperellipseShape* sa = AsSmoothSuperellipse(a);
+	const SuperellipseShape* sb = sa ? AsSmoothSuperellipse(b) : nullptr;
+	if (!sb || CentresCoincide(a, pa, b, pb))
+		return ConvexContact(a, pa, b, pb, options, warm);
+	SuperellipsePairPoint at;
+	const LevelResult level = CheckedResult(SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at));
+	if (!level.Ok() || !at.valid)
+		return ConvexContact(a, pa, b, pb, options, warm);
+	RecordWarmStart(warm, pa, pb, level);
+	ContactResult c = ContactOfLevel(level);
+	// ContactNormal's mean of the unit normals (they are opposed: the solve checked).
+	c.normal = Normalize(at.normalA - at.normalB);
+	const Vec2 X = level.point;
+	// ContactFromLevel's points: X itself on a surface, else the far crossing along the normal,
+	// its first Newton step from the level and gradient the solve ended with.
+	auto crossing = [&](const SuperellipseShape& s, const Pose& ps, double lambda, Vec2 grad, Vec2 dir, Vec2& point) {
+		if (std::fabs(lambda - 1.0) <= 1e-10)
+		{
+			point = X;
+			return true;
+		}
+		double t = 0.0;
+		const double known[2] = {lambda, Dot(grad, dir)};
+		const Vec2 x = ToBody(ps, X), d = InvRotate(ps.q, dir);
+		const bool ellipse = s.N() == 2.0 && s.M() == 2.0; // the closed form
+		if (!(ellipse ? s.FarCrossing(x, d, t) : SuperellipseFarCrossing(s.Terms(), x, d, t, known)))
+			return false;
+		point = X + t * dir;
+		return true;
+	};
+	if (!crossing(*sa, pa, at.levelA, at.gradA, c.normal, c.pointA) ||
+	    !crossing(*sb, pb, at.levelB, at.gradB, -c.normal, c.pointB))
+		return ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
 	SetSeparation(c, level.level <= 1.0);
 	return c;
 }
@@ -399,6 +438,9 @@ struct DispatchTable
 				SetSymmetric(ShapeFamily(i), ShapeFamily(j), &ConvexContact); // Newton or grid by the shapes' flags
 		for (int i = 0; i < n; ++i)
 			SetSymmetric(ShapeFamily::heart, ShapeFamily(i), &GridContact);   // never convex
+		SetSymmetric(ShapeFamily::superellipse, ShapeFamily::superellipse, &SuperellipseContact);
+		SetSymmetric(ShapeFamily::superellipse, ShapeFamily::ellipse, &SuperellipseContact);
+		SetSymmetric(ShapeFamily::superellipse, ShapeFamily::circle, &SuperellipseContact);
 		SetSymmetric(ShapeFamily::ellipse, ShapeFamily::ellipse, &EllipseContact);
 		SetSymmetric(ShapeFamily::ellipse, ShapeFamily::circle, &EllipseContact);
 		SetSymmetric(ShapeFamily::circle, ShapeFamily::circle, &CircleContact);

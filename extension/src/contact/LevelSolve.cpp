@@ -120,15 +120,7 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 		}
 	}
 	r = CheckedResult(r);
-	if (warm)
-	{
-		warm->valid = r.Ok() && r.multiplier > 0.0;
-		if (warm->valid)
-		{
-			warm->localPoint = ToBody(pa, r.point);
-			warm->multiplier = r.multiplier;
-		}
-	}
+	RecordWarmStart(warm, pa, pb, r);
 	return r;
 }
 

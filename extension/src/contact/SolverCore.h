@@ -17,6 +17,21 @@ inline bool NewtonApplies(const Shape& a, const Shape& b, LevelResult& failure)
 	return false;
 }
 
+/// Records a solved level as the next warm start (the point in both bodies' frames and the
+/// multiplier); a failed solve, or one without a positive multiplier, invalidates it.
+inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, const LevelResult& level)
+{
+	if (!warm)
+		return;
+	warm->valid = level.Ok() && level.multiplier > 0.0;
+	warm->hasPointB = warm->valid;
+	if (!warm->valid)
+		return;
+	warm->localPoint = ToBody(pa, level.point);
+	warm->localPointB = ToBody(pb, level.point);
+	warm->multiplier = level.multiplier;
+}
+
 class SuperellipseShape;
 /// The shape as a plain ellipse or circle (n = m = 2, level f or f^1), else null.
 const SuperellipseShape* AsPlainEllipse(const Shape& s);
@@ -32,6 +47,28 @@ struct EllipsePairPoints
 /// given and the pair is solved in double (aspect ratios up to 4).
 LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
                                   const WarmStart* warm, EllipsePairPoints* points = nullptr);
+
+/// The shape as a superellipse that SolveSuperellipsePairLevel takes (smooth: n, m ≥ 2; the raw
+/// level f, not the ζ-form), else null.
+const SuperellipseShape* AsSmoothSuperellipse(const Shape& s);
+/// What the superellipse pair solver knows at its answer: the contact's normal and points
+/// follow from it without evaluating the shapes again.
+struct SuperellipsePairPoint
+{
+	Vec2 normalA;         ///< unit ∇λA at the point, world frame
+	Vec2 normalB;         ///< unit ∇λB there
+	Vec2 gradA;           ///< ∇λA itself (world frame and units)
+	Vec2 gradB;           ///< ∇λB there
+	double levelA = 0.0;  ///< λA there
+	double levelB = 0.0;  ///< λB there
+	bool valid = false;   ///< false: compute them as ContactFromLevel does
+};
+/// Common level of two smooth superellipses (AsSmoothSuperellipse) by the generic Newton's
+/// equations and rules with the levels evaluated inline in A's frame (SuperellipsePairLevel.cpp);
+/// warm starts and multipliers are interchangeable with SolveCommonLevelNewton's.
+LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                                       const SolverOptions& options, const WarmStart* warm,
+                                       SuperellipsePairPoint* at = nullptr);
 
 /// Newton–Raphson on the common level from (ξ, m = log μ) in a PairFrame; `level` is λA there.
 LevelResult RunNewton(const PairFrame& frame, Vec2 xi, double m, const SolverOptions& options);

@@ -1,6 +1,7 @@
 // b2analytic: superellipse family with closed forms.
 #include "b2analytic/SuperellipseShape.h"
 
+#include "geometry/SuperellipseTerms.h"
 #include "numerics/Powers.h"
 #include "numerics/RootFinding.h"
 
@@ -36,8 +37,6 @@ void RequireExponent(const char* what, const char* field, double v, double lowes
 		throw InvalidParameter(what, field, "must be finite and >= " + FormatNumber(lowest), v);
 }
 
-double Sign(double t) { return t > 0.0 ? 1.0 : (t < 0.0 ? -1.0 : 0.0); }
-
 void RequireRepresentable(const char* what, const SuperellipseShape& s)
 {
 	// Lengths and exponents whose powers leave double precision's range have no usable surface:
@@ -68,8 +67,8 @@ SuperellipseShape::SuperellipseShape(double a, double b, double n, double m, dou
 	        // λ^(1/q) with q = min(n, m)/2 is ‖(|x/a|^{n/q}, |y/b|^{m/q})‖_q squared-like: convex
 	        // (a q-norm of convex non-negative terms) and of degree about 2. The ζ-form is already.
 	        zeta > 0.0 ? 1.0 : std::max(1.0, 0.5 * std::min(n, m))),
-	  m_a(a), m_b(b), m_n(n), m_m(m), m_zeta(zeta), m_nInt(SmallInteger(n)), m_mInt(SmallInteger(m)), m_invA(1.0 / a),
-	  m_invB(1.0 / b), m_gradX(n / a), m_gradY(m / b), m_hessX(n * (n - 1.0) / (a * a)), m_hessY(m * (m - 1.0) / (b * b))
+	  m_a(a), m_b(b), m_n(n), m_m(m), m_zeta(zeta),
+	  m_terms{n, m, SmallInteger(n), SmallInteger(m), 1.0 / a, 1.0 / b, n / a, m / b, n * (n - 1.0) / (a * a), m * (m - 1.0) / (b * b)}
 {
 	// Validation happens before Finalize touches any geometry.
 	const char* what = "superellipse";
@@ -126,64 +125,15 @@ std::string SuperellipseShape::Describe() const
 	}
 }
 
-inline double SuperellipseShape::PowAbs(double t, double e, int k)
-{
-	t = std::fabs(t);
-	// Small integer powers by multiplication, exact to rounding and several times faster than
-	// pow; inline, since the Newton solvers call it for every level they evaluate.
-	switch (k)
-	{
-	case 0: return 1.0;
-	case 1: return t;
-	case 2: return t * t;
-	case 3: return t * t * t;
-	case 4: { const double t2 = t * t; return t2 * t2; }
-	case 6: { const double t3 = t * t * t; return t3 * t3; }
-	case 7: { const double t2 = t * t, t3 = t2 * t; return t3 * t3 * t; }
-	case 8: { const double t2 = t * t, t4 = t2 * t2; return t4 * t4; }
-	default: break;
-	}
-	if (k < 0)
-		return std::pow(t, e);
-	// Exponentiation by squaring.
-	double r = 1.0;
-	while (k > 0)
-	{
-		if (k & 1) r *= t;
-		t *= t;
-		k >>= 1;
-	}
-	return r;
-}
-
 double SuperellipseShape::Level(Vec2 x) const
 {
-	const double f = PowAbs(x.x * m_invA, m_n, m_nInt) + PowAbs(x.y * m_invB, m_m, m_mInt);
+	const double f = PowAbs(x.x * m_terms.invA, m_n, m_terms.nInt) + PowAbs(x.y * m_terms.invB, m_m, m_terms.mInt);
 	return m_zeta > 0.0 ? std::pow(f, 1.0 / m_zeta) : f;
-}
-
-LevelDerivatives SuperellipseShape::RawDerivatives(Vec2 x) const
-{
-	// f = |X|^n + |Y|^m with X = x/a, Y = y/b:
-	//   ∂f/∂x = (n/a) sgn(X)|X|^{n−1},  ∂²f/∂x² = n(n−1)/a² |X|^{n−2}   (same for y).
-	const double X = x.x * m_invA, Y = x.y * m_invB;
-	const double ax = std::fabs(X), ay = std::fabs(Y);
-	const double xn2 = (m_n < 2.0 && ax == 0.0) ? 0.0 : PowAbs(ax, m_n - 2.0, m_nInt >= 2 ? m_nInt - 2 : -1);
-	const double ym2 = (m_m < 2.0 && ay == 0.0) ? 0.0 : PowAbs(ay, m_m - 2.0, m_mInt >= 2 ? m_mInt - 2 : -1);
-	const double xn1 = m_n >= 2.0 ? xn2 * ax : PowAbs(ax, m_n - 1.0, m_nInt >= 1 ? m_nInt - 1 : -1);
-	const double ym1 = m_m >= 2.0 ? ym2 * ay : PowAbs(ay, m_m - 1.0, m_mInt >= 1 ? m_mInt - 1 : -1);
-	LevelDerivatives d;
-	d.value = xn1 * ax + ym1 * ay;
-	d.gradient = Vec2(m_gradX * Sign(X) * xn1, m_gradY * Sign(Y) * ym1);
-	d.hessian.xx = m_hessX * xn2;
-	d.hessian.yy = m_hessY * ym2;
-	d.hessian.xy = 0.0;
-	return d;
 }
 
 LevelDerivatives SuperellipseShape::Derivatives(Vec2 x) const
 {
-	LevelDerivatives d = RawDerivatives(x);
+	LevelDerivatives d = RawSuperellipseDerivatives(m_terms, x);
 	if (m_zeta > 0.0 && m_zeta != 1.0)
 	{
 		// λ = f^{1/ζ}: ∇λ = (1/ζ) f^{1/ζ−1} ∇f,
@@ -212,8 +162,8 @@ double SuperellipseShape::RadiusAt(Vec2 u, double level) const
 	if (!(F > 0.0))
 		return 0.0;
 	// f(t·u) = t^n·A + t^m·B.
-	const double A = PowAbs(u.x / m_a, m_n, m_nInt);
-	const double B = PowAbs(u.y / m_b, m_m, m_mInt);
+	const double A = PowAbs(u.x / m_a, m_n, m_terms.nInt);
+	const double B = PowAbs(u.y / m_b, m_m, m_terms.mInt);
 	if (m_n == m_m)
 		return RootOf(F / (A + B), m_n);
 	if (A == 0.0)
@@ -239,12 +189,12 @@ double SuperellipseShape::RadiusAt(Vec2 u, double level) const
 bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
 {
 	if (m_n != 2.0 || m_m != 2.0)
-		return FarCrossingNewton(x, d, t);
+		return SuperellipseFarCrossing(m_terms, x, d, t);
 	// (X + t·D)² + (Y + t·E)² = 1 with X = x/a, D = dx/a, Y = y/b, E = dy/b (the own level is 1
 	// in both forms: f^(1/ζ) = 1 where f = 1): A t² + 2 B t + C = 0, A = D² + E², B = X D + Y E,
 	// C = X² + Y² − 1. The larger root (−B + √(B² − A C))/A; where B > 0 it cancels, so it is
 	// computed as −C/(B + √(B² − A C)) there (the product of the roots is C/A).
-	const double X = x.x * m_invA, Y = x.y * m_invB, D = d.x * m_invA, E = d.y * m_invB;
+	const double X = x.x * m_terms.invA, Y = x.y * m_terms.invB, D = d.x * m_terms.invA, E = d.y * m_terms.invB;
 	const double A = D * D + E * E, B = X * D + Y * E, C = (X * X + Y * Y) - 1.0;
 	const double disc = B * B - A * C;
 	if (!(A > 0.0) || !(disc >= 0.0) || !std::isfinite(disc))
@@ -252,85 +202,6 @@ bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
 	const double root = std::sqrt(disc);
 	t = B > 0.0 ? -C / (B + root) : (root - B) / A;
 	return std::isfinite(t);
-}
-
-bool SuperellipseShape::FarCrossingNewton(Vec2 x, Vec2 d, double& t) const
-{
-	// In scaled coordinates u = X + t·D, v = Y + t·E (X = x/a, D = dx/a, Y = y/b, E = dy/b) the
-	// surface is f = |u|^n + |v|^m = 1 in both forms. With p = min(n, m),
-	//   g(t) = f^{1/p} − 1 = ‖(|u|^{n/p}, |v|^{m/p})‖_p − 1
-	// is convex in t: a p-norm of convex non-negative terms. So Newton descends monotonically onto
-	// the far crossing from any point beyond it (g ≥ 0, g' > 0), and from a point inside (g < 0,
-	// g' > 0) its first step lands beyond it. For n = m, f^{1/p} is a norm, linear along rays,
-	// and nearly linear along the contact normal, which meets the surface square on: two or three
-	// steps reach rounding there. g' = (f^{1/p}/(p·f))·f', f' = n|u|^{n−1}sgn(u)·D + m|v|^{m−1}sgn(v)·E.
-	const double X = x.x * m_invA, Y = x.y * m_invB, D = d.x * m_invA, E = d.y * m_invB;
-	const double dd = D * D + E * E;
-	if (!(dd > 0.0) || !std::isfinite(dd) || !std::isfinite(X) || !std::isfinite(Y))
-		return false;
-	const double p = std::min(m_n, m_m);
-	const int nk = m_nInt >= 1 ? m_nInt - 1 : -1, mk = m_mInt >= 1 ? m_mInt - 1 : -1;
-	double g = 0.0, slope = 0.0;
-	auto evaluate = [&](double at) {
-		const double u = X + at * D, v = Y + at * E;
-		const double au = std::fabs(u), av = std::fabs(v);
-		const double un1 = PowAbs(au, m_n - 1.0, nk), vm1 = PowAbs(av, m_m - 1.0, mk);
-		const double f = un1 * au + vm1 * av;
-		const double df = m_n * un1 * Sign(u) * D + m_m * vm1 * Sign(v) * E;
-		const double r = RootOf(f, p);
-		g = r - 1.0;
-		slope = f > 0.0 ? r / (p * f) * df : 0.0;
-		return std::isfinite(g) && std::isfinite(slope);
-	};
-	t = 0.0;
-	if (!evaluate(0.0))
-		return false;
-	if (!(slope > 0.0))
-	{
-		// Moving inwards or along: start where the line leaves the circle of radius √2 about the
-		// centre, which holds the unit square and so the particle (|u|, |v| ≤ 1 on it): g ≥ 0 there,
-		// and g' > 0 unless the line misses the particle or only grazes it.
-		const double B = X * D + Y * E, C = X * X + Y * Y - 2.0;
-		const double disc = B * B - dd * C;
-		if (!(disc >= 0.0) || !std::isfinite(disc))
-			return false;
-		const double root = std::sqrt(disc);
-		t = B > 0.0 ? -C / (B + root) : (root - B) / dd;
-		if (!evaluate(t) || !(slope > 0.0))
-			return false;
-	}
-	if (g == 0.0)
-		return true;
-	// The step tolerance: rounding of t itself, or 1e-15 of the particle's size along the line.
-	const double unit = 1.0 / std::sqrt(dd);
-	double previous = 0.0; // the last step's length (0: none yet)
-	for (int it = 0; it < 60; ++it)
-	{
-		const double step = g / slope;
-		const double tol = 1e-15 * (std::fabs(t) + unit);
-		// After the first step every step goes backwards (monotone descent onto the root); one
-		// forwards beyond rounding means the line misses the particle, or g lost its convexity to
-		// rounding: the caller searches instead.
-		if (it > 0 && step < -tol)
-			return false;
-		t -= step;
-		if (std::fabs(step) <= tol)
-			return std::isfinite(t);
-		// Quadratic convergence: once a step was small against the particle (1e-3 of its size
-		// along the line, where g is its own quadratic model to that order) and the next one
-		// contracted, the error left is about K·step² with K ≈ |step|/previous²; with a factor 10
-		// below the tolerance the step that would confirm it is not evaluated. (A large first
-		// step, from inside along a grazing line, says nothing about K.)
-		if (previous > 0.0 && previous <= 1e-3 * unit && std::fabs(step) < 0.25 * previous &&
-		    10.0 * std::fabs(step) * (std::fabs(step) / previous) * (std::fabs(step) / previous) <= tol)
-			return std::isfinite(t);
-		previous = std::fabs(step);
-		if (!evaluate(t) || !(slope > 0.0))
-			return false;
-		if (g == 0.0)
-			return true;
-	}
-	return false;
 }
 
 Box SuperellipseShape::ComputeAABB(const Pose& pose) const
@@ -368,7 +239,7 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 	{
 		const double p = m_n;
 		if (p == 1.0)
-			return std::fabs(e.x) >= std::fabs(e.y) ? Vec2(m_a * Sign(e.x), 0.0) : Vec2(0.0, m_b * Sign(e.y));
+			return std::fabs(e.x) >= std::fabs(e.y) ? Vec2(m_a * SignOf(e.x), 0.0) : Vec2(0.0, m_b * SignOf(e.y));
 		// Hölder: X_i = sgn(e_i)|e_i|^{q−1} / ‖e‖_q^{q−1}, q = p/(p−1).
 		if (p == 2.0)
 		{
@@ -381,19 +252,19 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 			// q = 4/3: |e_i|^{1/3} by cbrt, and ‖e‖_q^{1/3} = (Σ|e_i|^{4/3})^{1/4} by two roots.
 			const double px = std::cbrt(std::fabs(e.x)), py = std::cbrt(std::fabs(e.y));
 			const double norm = std::sqrt(std::sqrt(px * std::fabs(e.x) + py * std::fabs(e.y)));
-			return Vec2(m_a * Sign(e.x) * px / norm, m_b * Sign(e.y) * py / norm);
+			return Vec2(m_a * SignOf(e.x) * px / norm, m_b * SignOf(e.y) * py / norm);
 		}
 		const double q = p / (p - 1.0);
 		const double px = std::pow(std::fabs(e.x), q - 1.0), py = std::pow(std::fabs(e.y), q - 1.0);
 		const double norm = std::pow(px * std::fabs(e.x) + py * std::fabs(e.y), (q - 1.0) / q);
-		return Vec2(m_a * Sign(e.x) * px / norm, m_b * Sign(e.y) * py / norm);
+		return Vec2(m_a * SignOf(e.x) * px / norm, m_b * SignOf(e.y) * py / norm);
 	}
 	if (m_n == 1.0 || m_m == 1.0)
 		return Shape::Support(d);
 	if (e.x == 0.0)
-		return Vec2(0.0, m_b * Sign(e.y));
+		return Vec2(0.0, m_b * SignOf(e.y));
 	if (e.y == 0.0)
-		return Vec2(m_a * Sign(e.x), 0.0);
+		return Vec2(m_a * SignOf(e.x), 0.0);
 	// Lagrange: |e_x| = κ n |X|^{n−1}, |e_y| = κ m |Y|^{m−1}, |X|^n + |Y|^m = 1. With s = log κ,
 	// g(s) = exp(αx (cx − s)) + exp(αy (cy − s)) − 1, α = n/(n−1), c = log(|e|/n): convex and
 	// decreasing, so Newton from the left (g ≥ 0) is monotone. Start at s = max(cx, cy): one term
@@ -414,7 +285,7 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 	}
 	const double X = std::exp((cx - s) / (m_n - 1.0));
 	const double Y = std::exp((cy - s) / (m_m - 1.0));
-	return Vec2(m_a * Sign(e.x) * X, m_b * Sign(e.y) * Y);
+	return Vec2(m_a * SignOf(e.x) * X, m_b * SignOf(e.y) * Y);
 }
 
 void SuperellipseShape::SupportBounds(Vec2 d, double& lower, double& upper) const

@@ -35,19 +35,23 @@ inline Solve3Result Solve3(const double J[3][3], const double r[3])
 	const double det = J[0][0] * C[0][0] + J[0][1] * C[1][0] + J[0][2] * C[2][0];
 	if (!(std::fabs(det) > 0.0) || !std::isfinite(det))
 		return out;
-	double normJ = 0.0, normInv = 0.0; // 1-norms: largest column sums
+	// 1-norms: largest column sums. (Comparisons, not std::fmax, which is a library call here;
+	// a finite det leaves no NaN for fmax's rule to matter.)
+	double normJ = 0.0, normC = 0.0;
 	for (int j = 0; j < 3; ++j)
 	{
-		normJ = std::fmax(normJ, std::fabs(J[0][j]) + std::fabs(J[1][j]) + std::fabs(J[2][j]));
-		normInv = std::fmax(normInv, std::fabs(C[0][j]) + std::fabs(C[1][j]) + std::fabs(C[2][j]));
+		const double sumJ = std::fabs(J[0][j]) + std::fabs(J[1][j]) + std::fabs(J[2][j]);
+		const double sumC = std::fabs(C[0][j]) + std::fabs(C[1][j]) + std::fabs(C[2][j]);
+		normJ = sumJ > normJ ? sumJ : normJ;
+		normC = sumC > normC ? sumC : normC;
 	}
-	normInv /= std::fabs(det);
-	const double rcond = 1.0 / (normJ * normInv);
-	if (!std::isfinite(rcond))
+	const double inv = 1.0 / det;
+	const double rcond = std::fabs(det) / (normJ * normC); // 1 / (‖J‖ · ‖adj J‖ / |det|)
+	if (!std::isfinite(rcond) || !std::isfinite(inv))
 		return out;
 	out.rcond = rcond;
 	for (int i = 0; i < 3; ++i)
-		out.x[i] = (C[i][0] * r[0] + C[i][1] * r[1] + C[i][2] * r[2]) / det;
+		out.x[i] = (C[i][0] * r[0] + C[i][1] * r[1] + C[i][2] * r[2]) * inv;
 	return out;
 }
 

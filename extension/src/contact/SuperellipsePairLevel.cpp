@@ -1,0 +1,333 @@
+// b2analytic: the common level of two superellipses by Newton, the levels evaluated inline.
+#include "contact/SolverCore.h"
+
+#include "b2analytic/SuperellipseShape.h"
+#include "geometry/SuperellipseTerms.h"
+#include "numerics/SmallLinear.h"
+
+#include <algorithm>
+#include <cmath>
+#include <typeinfo>
+
+namespace b2a
+{
+
+namespace
+{
+// One shape's gauge ψ = f^{1/q} at a point, with ∇ψ and ∇²ψ in A's body frame and units of the
+// pair's size, and f and ∇f there (the contact's line crossings start from them). Plain doubles
+// without initialisers: every evaluation fills them all.
+struct Gauge
+{
+	double lambda, psi;
+	double gx, gy;          // ∇ψ
+	double hxx, hxy, hyy;   // ∇²ψ
+	double fx, fy;          // ∇f
+};
+
+// The pair seen from A: lengths in units of the pair's size s = (rA + rB)/2, the frame A's body
+// frame with its origin at A's centre. B's centre lies at c and B's body axes are turned by r.
+struct PairInA
+{
+	SuperellipseTerms a, b; // the shapes' terms in units of s (ScaledTerms)
+	Vec2 c;
+	Rot r;
+	double q = 1.0, invQ = 1.0; // the gauge's power (PairFrame::power) and its inverse
+};
+
+// ψ = f^{1/q}: ∇ψ = ψ'∇f, ∇²ψ = ψ'∇²f + ψ''∇f∇fᵀ with ψ' = ψ/(qf), ψ'' = ψ'(1/q − 1)/f (the
+// generic solver's PairFrame::Eval), from f, ∇f and ∇²f already in A's frame. At the centre
+// (f = 0) ψ and its derivatives vanish and the Newton step fails, as it should.
+inline void ToGauge(const PairInA& p, double f, double fx, double fy, double hxx, double hxy, double hyy, Gauge& g)
+{
+	g.lambda = f;
+	g.fx = fx;
+	g.fy = fy;
+	if (p.q == 1.0)
+	{
+		g.psi = f;
+		g.gx = fx;
+		g.gy = fy;
+		g.hxx = hxx;
+		g.hxy = hxy;
+		g.hyy = hyy;
+		return;
+	}
+	const double psi = f > 0.0 ? RootOf(f, p.q) : 0.0;
+	const double inv = f > 0.0 ? 1.0 / f : 0.0;
+	const double d1 = psi * p.invQ * inv;
+	const double d2 = d1 * (p.invQ - 1.0) * inv;
+	g.psi = psi;
+	g.gx = d1 * fx;
+	g.gy = d1 * fy;
+	g.hxx = d1 * hxx + d2 * fx * fx;
+	g.hxy = d1 * hxy + d2 * fx * fy;
+	g.hyy = d1 * hyy + d2 * fy * fy;
+}
+
+// Both shapes at ξ (A's frame, units of s). A's derivatives are already in its frame; B's are
+// turned by r: ∇f ↦ R∇f and the diagonal ∇²f = diag(hx, hy) ↦ R diag(hx, hy) Rᵀ.
+inline void Evaluate(const PairInA& p, Vec2 xi, Gauge& ga, Gauge& gb)
+{
+	const LevelDerivatives da = RawSuperellipseDerivatives(p.a, xi);
+	ToGauge(p, da.value, da.gradient.x, da.gradient.y, da.hessian.xx, 0.0, da.hessian.yy, ga);
+	const LevelDerivatives db = RawSuperellipseDerivatives(p.b, InvRotate(p.r, xi - p.c));
+	const double c = p.r.c, s = p.r.s, hx = db.hessian.xx, hy = db.hessian.yy;
+	const Vec2 grad = Rotate(p.r, db.gradient);
+	ToGauge(p, db.value, grad.x, grad.y, c * c * hx + s * s * hy, c * s * (hx - hy), s * s * hx + c * c * hy, gb);
+}
+
+// The residual (∇ψA + μ∇ψB, ψA − ψB) and its size relative to the size of its terms (the
+// generic solver's measure, so that both accept the same rounding floor). A NaN anywhere in the
+// gauges' values or gradients makes it NaN.
+inline double Residual(const Gauge& ga, const Gauge& gb, double mu, double r[3])
+{
+	r[0] = ga.gx + mu * gb.gx;
+	r[1] = ga.gy + mu * gb.gy;
+	r[2] = ga.psi - gb.psi;
+	const double gradScale = ga.gx * ga.gx + ga.gy * ga.gy + mu * mu * (gb.gx * gb.gx + gb.gy * gb.gy) + 1e-300;
+	const double levelScale = ga.psi * ga.psi + gb.psi * gb.psi + 1e-300;
+	return std::sqrt((r[0] * r[0] + r[1] * r[1]) / gradScale + r[2] * r[2] / levelScale);
+}
+} // namespace
+
+const SuperellipseShape* AsSmoothSuperellipse(const Shape& s)
+{
+	// The class is final, so the type test is exact (and cheaper than a dynamic_cast). The ζ-form's
+	// level f^{1/ζ} is left to the generic solver.
+	if (typeid(s) != typeid(SuperellipseShape) || !s.IsSmoothConvex())
+		return nullptr;
+	const SuperellipseShape* e = static_cast<const SuperellipseShape*>(&s);
+	return e->IsNormalised() ? nullptr : e;
+}
+
+LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                                       const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at)
+{
+	// The generic Newton (CommonLevelNewton.cpp: the same equations, gauge, trust region, line
+	// search and stopping rules) without what it pays for being generic: the shapes are evaluated
+	// inline from their terms, in A's body frame (A's point needs no transform, B's one rotation),
+	// the multiplier is μ itself rather than log μ (no exp per evaluation; steps are limited to
+	// the same factor e² either way), and the answer keeps what the contact's normal and points
+	// need. Its warm starts and multipliers are interchangeable with the generic solver's.
+	if (at)
+		at->valid = false;
+	LevelResult result;
+	result.method = SolveMethod::newton;
+	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
+	PairInA p;
+	p.a = ScaledTerms(a.Terms(), size);
+	p.b = ScaledTerms(b.Terms(), size);
+	const Pose rel = Relative(pa, pb);
+	p.c = rel.p / size;
+	p.r = rel.q;
+	p.q = std::min(a.LevelPower(), b.LevelPower());
+	p.invQ = 1.0 / p.q;
+
+	Vec2 xi;
+	double mu = 1.0;
+	if (warm && warm->valid && warm->multiplier > 0.0 && IsFinite(warm->localPoint) && std::isfinite(warm->multiplier))
+	{
+		mu = warm->multiplier;
+		xi = warm->localPoint / size;
+		if (warm->hasPointB && IsFinite(warm->localPointB))
+		{
+			// Where the point went: between where it stayed with A and where it went with B.
+			// For two circles, whose point divides the centre line in the ratio of the radii and
+			// whose multiplier is rB/rA, the weight 1/(1 + μ) of B's is exact.
+			const Vec2 withB = ToBody(pa, ToWorld(pb, warm->localPointB)) / size;
+			xi = xi + (1.0 / (1.0 + mu)) * (withB - xi);
+		}
+	}
+	else
+	{
+		const PairFrame f(a, pa, b, pb);
+		Vec2 start;
+		if (!GeometricStart(f, start, mu))
+		{
+			result.failure = "coincident centres: no common-level point between them";
+			return result;
+		}
+		xi = ToBody(pa, f.World(start)) / size;
+	}
+
+	// Two evaluated points, the current one and the trial, swapped when a trial is accepted.
+	struct Point
+	{
+		Vec2 xi;
+		double mu;
+		Gauge A, B;
+		double r[3];
+		double relative; // NaN where anything evaluated was not finite
+	};
+	auto evaluate = [&](Point& q, Vec2 at_xi, double at_mu) {
+		q.xi = at_xi;
+		q.mu = at_mu;
+		Evaluate(p, at_xi, q.A, q.B);
+		q.relative = Residual(q.A, q.B, at_mu, q.r);
+	};
+	Point points[2];
+	Point* current = &points[0];
+	Point* trial = &points[1];
+	evaluate(*current, xi, mu);
+	const double trust = std::max(0.5, 0.5 * Length(p.c));
+	const int cap = std::max(1, options.maxIterations);
+	double previousXi = 0.0, previousMu = 0.0; // the last full step's size in ξ and in μ/μ (0: none yet)
+	for (int it = 1; it <= cap; ++it)
+	{
+		Point& q = *current;
+		result.iterations = it;
+		if (!std::isfinite(q.relative))
+		{
+			result.failure = "non-finite level value or derivative during Newton iteration";
+			return result;
+		}
+		if (it == 1)
+		{
+			// The least-squares multiplier for the start point, μ = −∇ψA·∇ψB / |∇ψB|², where it
+			// lowers the residual (a stale multiplier makes Newton crawl).
+			const double gb2 = q.B.gx * q.B.gx + q.B.gy * q.B.gy;
+			const double muLs = gb2 > 0.0 ? -(q.A.gx * q.B.gx + q.A.gy * q.B.gy) / gb2 : 0.0;
+			if (muLs > 0.0 && std::isfinite(muLs) && muLs != q.mu)
+			{
+				double r[3];
+				const double relative = Residual(q.A, q.B, muLs, r);
+				if (relative < q.relative)
+				{
+					q.mu = muLs;
+					q.relative = relative;
+					std::copy(r, r + 3, q.r);
+				}
+			}
+		}
+		// Jacobian of (∇ψA + μ∇ψB, ψA − ψB) with respect to (ξ, μ). (A Hessian that is not finite
+		// makes it singular to Solve3.)
+		const double hxx = q.A.hxx + q.mu * q.B.hxx, hxy = q.A.hxy + q.mu * q.B.hxy, hyy = q.A.hyy + q.mu * q.B.hyy;
+		const double J[3][3] = {{hxx, hxy, q.B.gx}, {hxy, hyy, q.B.gy}, {q.A.gx - q.B.gx, q.A.gy - q.B.gy, 0.0}};
+		const double minusR[3] = {-q.r[0], -q.r[1], -q.r[2]};
+		const Solve3Result step = Solve3(J, minusR);
+		if (!(step.rcond > 1e-14))
+		{
+			if (q.relative < 1e-11)
+				break; // solved: the Jacobian is singular only at the answer's rounding level
+			result.failure = "singular or ill-conditioned Jacobian";
+			return result;
+		}
+		double delta[3] = {step.x[0], step.x[1], step.x[2]};
+		// Quadratic convergence: after a full step δₖ, the new step δₖ₊₁ gives Newton's constant
+		// K ≈ |δₖ₊₁|/|δₖ|², and the error left after taking δₖ₊₁ is about K·|δₖ₊₁|². Where that is
+		// ten times below the tolerance, δₖ₊₁ is the last step and is taken without evaluating
+		// the shapes again: ψ + ∇ψ·δ, ∇ψ + ∇²ψ·δ, f = ψ^q (df = q·f·dψ/ψ) and ∇f = (q·f/ψ)∇ψ,
+		// exact to O(|δ|²). (The generic solver decides this one evaluation later, from the
+		// accepted step.) The estimate holds only once Newton is in its quadratic regime, so it
+		// needs the evidence of it: the residual already small (1e-6), the previous step small
+		// (1e-2 of the size), and both the point's steps and the multiplier's relative steps
+		// contracting by 4 or more, each with its own K (a point that has settled while μ still
+		// moves, or the reverse, has not converged).
+		const double stepXi = std::max(std::fabs(delta[0]), std::fabs(delta[1]));
+		const double stepMu = std::fabs(delta[2]) / q.mu;
+		auto settled = [&](double now, double before) {
+			return now <= 0.1 * options.stepTolerance ||
+			       (before > 0.0 && now < 0.25 * before && 10.0 * (now / (before * before)) * now * now <= options.stepTolerance);
+		};
+		if (q.relative <= 1e-6 && previousXi > 0.0 && previousXi <= 1e-2 && settled(stepXi, previousXi) &&
+		    settled(stepMu, previousMu))
+		{
+			const double dx = delta[0], dy = delta[1];
+			q.xi = q.xi + Vec2(dx, dy);
+			q.mu += delta[2];
+			for (Gauge* g : {&q.A, &q.B})
+			{
+				const double dpsi = g->gx * dx + g->gy * dy;
+				g->gx += g->hxx * dx + g->hxy * dy;
+				g->gy += g->hxy * dx + g->hyy * dy;
+				if (g->psi > 0.0)
+				{
+					g->lambda += p.q * g->lambda * dpsi / g->psi;
+					const double k = p.q * g->lambda / (g->psi + dpsi);
+					g->fx = k * g->gx;
+					g->fy = k * g->gy;
+				}
+				g->psi += dpsi;
+			}
+			break;
+		}
+		// Trust region (the generic solver's): at most half the pair's size or of the distance
+		// between the centres in ξ, and a factor e² in μ.
+		double limit = 1.0;
+		if (stepXi > trust) limit = trust / stepXi;
+		const double up = 6.38905609893065 * q.mu, down = -0.864664716763387 * q.mu; // (e² − 1)μ, (e⁻² − 1)μ
+		if (delta[2] > up) limit = std::min(limit, up / delta[2]);
+		if (delta[2] < down) limit = std::min(limit, down / delta[2]);
+		for (double& d : delta)
+			d *= limit;
+		// Backtracking on the residual with row weights frozen at the current point.
+		const double w12 =
+			1.0 / (q.A.gx * q.A.gx + q.A.gy * q.A.gy + q.mu * q.mu * (q.B.gx * q.B.gx + q.B.gy * q.B.gy) + 1e-300);
+		const double w3 = 1.0 / (q.A.psi * q.A.psi + q.B.psi * q.B.psi + 1e-300);
+		auto merit = [&](const Point& t) { return w12 * (t.r[0] * t.r[0] + t.r[1] * t.r[1]) + w3 * t.r[2] * t.r[2]; };
+		const double merit0 = merit(q);
+		const int halvings = q.relative < 1e-9 ? 3 : 40;
+		double alpha = 1.0;
+		bool accepted = false;
+		for (int k = 0; k < halvings; ++k, alpha *= 0.5)
+		{
+			evaluate(*trial, q.xi + alpha * Vec2(delta[0], delta[1]), q.mu + alpha * delta[2]);
+			if (trial->mu > 0.0 && merit(*trial) <= (1.0 - 1e-4 * alpha) * merit0) // (false for NaN)
+			{
+				accepted = true;
+				break;
+			}
+		}
+		if (!accepted)
+		{
+			if (q.relative < 1e-9)
+				break; // rounding floor
+			result.failure = "line search stalled (no step lowers the residual)";
+			return result;
+		}
+		const double moved = alpha * limit * stepXi;
+		std::swap(current, trial);
+		const bool full = limit == 1.0 && alpha == 1.0;
+		if ((full && moved <= options.stepTolerance) || current->relative < 1e-15)
+			break;
+		previousXi = full ? stepXi : 0.0;
+		previousMu = full ? stepMu : 0.0;
+		if (it == cap)
+		{
+			result.failure = "iteration cap reached";
+			return result;
+		}
+	}
+	const Point& q = *current;
+	const Vec2 nA = Normalize(Vec2(q.A.gx, q.A.gy)), nB = Normalize(Vec2(q.B.gx, q.B.gy));
+	if (!(Dot(nA, nB) < -1.0 + 1e-6))
+	{
+		result.failure = "converged to a point where the gradients are not opposed";
+		return result;
+	}
+	if (!(q.mu > 0.0))
+	{
+		result.failure = "converged to a non-positive multiplier";
+		return result;
+	}
+	result.status = SolveStatus::converged;
+	result.failure = "";
+	result.level = q.A.lambda;
+	result.point = ToWorld(pa, size * q.xi);
+	result.normal = Rotate(pa.q, nA);
+	result.multiplier = q.mu;
+	if (at)
+	{
+		at->gradA = Rotate(pa.q, Vec2(q.A.fx, q.A.fy)) / size;
+		at->gradB = Rotate(pa.q, Vec2(q.B.fx, q.B.fy)) / size;
+		at->normalA = result.normal;
+		at->normalB = Rotate(pa.q, nB);
+		at->levelA = q.A.lambda;
+		at->levelB = q.B.lambda;
+		at->valid = IsFinite(at->gradA) && IsFinite(at->gradB);
+	}
+	return result;
+}
+
+} // namespace b2a

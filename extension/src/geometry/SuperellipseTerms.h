@@ -1,0 +1,169 @@
+// b2analytic: the superellipse's raw level and its derivatives, inline (internal).
+#pragma once
+
+#include "b2analytic/SuperellipseShape.h"
+#include "numerics/Powers.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace b2a
+{
+
+/// |t|^e, with e given also as a small integer k (or −1): small integer powers by
+/// multiplication, exact to rounding and several times faster than pow. Inline, since the
+/// Newton solvers call it for every level they evaluate.
+inline double PowAbs(double t, double e, int k)
+{
+	t = std::fabs(t);
+	switch (k)
+	{
+	case 0: return 1.0;
+	case 1: return t;
+	case 2: return t * t;
+	case 3: return t * t * t;
+	case 4: { const double t2 = t * t; return t2 * t2; }
+	case 6: { const double t3 = t * t * t; return t3 * t3; }
+	case 7: { const double t2 = t * t, t3 = t2 * t; return t3 * t3 * t; }
+	case 8: { const double t2 = t * t, t4 = t2 * t2; return t4 * t4; }
+	default: break;
+	}
+	if (k < 0)
+		return std::pow(t, e);
+	// Exponentiation by squaring.
+	double r = 1.0;
+	while (k > 0)
+	{
+		if (k & 1) r *= t;
+		t *= t;
+		k >>= 1;
+	}
+	return r;
+}
+
+/// −1, 0 or 1.
+inline double SignOf(double t) { return t > 0.0 ? 1.0 : (t < 0.0 ? -1.0 : 0.0); }
+
+/// f = |x/a|^n + |y/b|^m at a body point, with its gradient and Hessian (the raw form, before
+/// any ζ transform). With X = x/a, Y = y/b:
+///   ∂f/∂x = (n/a) sgn(X)|X|^{n−1},  ∂²f/∂x² = n(n−1)/a² |X|^{n−2},  ∂²f/∂x∂y = 0   (same for y).
+/// At a point on an axis where an exponent is below 2 the infinite second derivative is reported
+/// as 0 (SuperellipseShape's documented convention).
+inline LevelDerivatives RawSuperellipseDerivatives(const SuperellipseTerms& t, Vec2 x)
+{
+	const double X = x.x * t.invA, Y = x.y * t.invB;
+	const double ax = std::fabs(X), ay = std::fabs(Y);
+	const double xn2 = (t.n < 2.0 && ax == 0.0) ? 0.0 : PowAbs(ax, t.n - 2.0, t.nInt >= 2 ? t.nInt - 2 : -1);
+	const double ym2 = (t.m < 2.0 && ay == 0.0) ? 0.0 : PowAbs(ay, t.m - 2.0, t.mInt >= 2 ? t.mInt - 2 : -1);
+	const double xn1 = t.n >= 2.0 ? xn2 * ax : PowAbs(ax, t.n - 1.0, t.nInt >= 1 ? t.nInt - 1 : -1);
+	const double ym1 = t.m >= 2.0 ? ym2 * ay : PowAbs(ay, t.m - 1.0, t.mInt >= 1 ? t.mInt - 1 : -1);
+	LevelDerivatives d;
+	d.value = xn1 * ax + ym1 * ay;
+	d.gradient = Vec2(t.gradX * SignOf(X) * xn1, t.gradY * SignOf(Y) * ym1);
+	d.hessian.xx = t.hessX * xn2;
+	d.hessian.yy = t.hessY * ym2;
+	d.hessian.xy = 0.0;
+	return d;
+}
+
+/// The terms of the same superellipse measured in units of `length` (semi-axes a/length and
+/// b/length): f is unchanged at corresponding points, its gradient is `length` times and its
+/// Hessian `length²` times the original's. Solvers that work in units of the pair's size use it.
+inline SuperellipseTerms ScaledTerms(const SuperellipseTerms& t, double length)
+{
+	SuperellipseTerms s = t;
+	s.invA *= length;
+	s.invB *= length;
+	s.gradX *= length;
+	s.gradY *= length;
+	s.hessX *= length * length;
+	s.hessY *= length * length;
+	return s;
+}
+
+/// The far crossing of the surface f = 1 by the body line x + t·d (SuperellipseShape::FarCrossing
+/// for exponents other than n = m = 2): Newton on a convex function of t, from where it descends
+/// monotonically; false when the line misses or only grazes the particle. `known`, where given,
+/// is {f, ∇f·d} at t = 0, which a caller that has them saves an evaluation with.
+inline bool SuperellipseFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, double& t, const double* known = nullptr)
+{
+	// In scaled coordinates u = X + t·D, v = Y + t·E (X = x/a, D = dx/a, Y = y/b, E = dy/b) the
+	// surface is f = |u|^n + |v|^m = 1 in both forms. With p = min(n, m),
+	//   g(t) = f^{1/p} − 1 = ‖(|u|^{n/p}, |v|^{m/p})‖_p − 1
+	// is convex in t: a p-norm of convex non-negative terms. So Newton descends monotonically onto
+	// the far crossing from any point beyond it (g ≥ 0, g' > 0), and from a point inside (g < 0,
+	// g' > 0) its first step lands beyond it. For n = m, f^{1/p} is a norm, linear along rays,
+	// and nearly linear along the contact normal, which meets the surface square on: two or three
+	// steps reach rounding there. g' = (f^{1/p}/(p·f))·f', f' = n|u|^{n−1}sgn(u)·D + m|v|^{m−1}sgn(v)·E.
+	const double X = x.x * s.invA, Y = x.y * s.invB, D = d.x * s.invA, E = d.y * s.invB;
+	const double dd = D * D + E * E;
+	if (!(dd > 0.0) || !std::isfinite(dd) || !std::isfinite(X) || !std::isfinite(Y))
+		return false;
+	const double p = std::min(s.n, s.m);
+	const int nk = s.nInt >= 1 ? s.nInt - 1 : -1, mk = s.mInt >= 1 ? s.mInt - 1 : -1;
+	double g = 0.0, slope = 0.0;
+	auto gauge = [&](double f, double df) {
+		const double r = RootOf(f, p);
+		g = r - 1.0;
+		slope = f > 0.0 ? r / (p * f) * df : 0.0;
+		return std::isfinite(g) && std::isfinite(slope);
+	};
+	auto evaluate = [&](double at) {
+		const double u = X + at * D, v = Y + at * E;
+		const double au = std::fabs(u), av = std::fabs(v);
+		const double un1 = PowAbs(au, s.n - 1.0, nk), vm1 = PowAbs(av, s.m - 1.0, mk);
+		return gauge(un1 * au + vm1 * av, s.n * un1 * SignOf(u) * D + s.m * vm1 * SignOf(v) * E);
+	};
+	t = 0.0;
+	if (!(known ? gauge(known[0], known[1]) : evaluate(0.0)))
+		return false;
+	if (!(slope > 0.0))
+	{
+		// Moving inwards or along: start where the line leaves the circle of radius √2 about the
+		// centre, which holds the unit square and so the particle (|u|, |v| ≤ 1 on it): g ≥ 0 there,
+		// and g' > 0 unless the line misses the particle or only grazes it.
+		const double B = X * D + Y * E, C = X * X + Y * Y - 2.0;
+		const double disc = B * B - dd * C;
+		if (!(disc >= 0.0) || !std::isfinite(disc))
+			return false;
+		const double root = std::sqrt(disc);
+		t = B > 0.0 ? -C / (B + root) : (root - B) / dd;
+		if (!evaluate(t) || !(slope > 0.0))
+			return false;
+	}
+	if (g == 0.0)
+		return true;
+	// The step tolerance: rounding of t itself, or 1e-15 of the particle's size along the line.
+	const double unit = 1.0 / std::sqrt(dd);
+	double previous = 0.0; // the last step's length (0: none yet)
+	for (int it = 0; it < 60; ++it)
+	{
+		const double step = g / slope;
+		const double tol = 1e-15 * (std::fabs(t) + unit);
+		// After the first step every step goes backwards (monotone descent onto the root); one
+		// forwards beyond rounding means the line misses the particle, or g lost its convexity to
+		// rounding: the caller searches instead.
+		if (it > 0 && step < -tol)
+			return false;
+		t -= step;
+		if (std::fabs(step) <= tol)
+			return std::isfinite(t);
+		// Quadratic convergence: once a step was small against the particle (1e-3 of its size
+		// along the line, where g is its own quadratic model to that order) and the next one
+		// contracted, the error left is about K·step² with K ≈ |step|/previous²; with a factor 10
+		// below the tolerance the step that would confirm it is not evaluated. (A large first
+		// step, from inside along a grazing line, says nothing about K.)
+		if (previous > 0.0 && previous <= 1e-3 * unit && std::fabs(step) < 0.25 * previous &&
+		    10.0 * std::fabs(step) * (std::fabs(step) / previous) * (std::fabs(step) / previous) <= tol)
+			return std::isfinite(t);
+		previous = std::fabs(step);
+		if (!evaluate(t) || !(slope > 0.0))
+			return false;
+		if (g == 0.0)
+			return true;
+	}
+	return false;
+}
+
+
+} // namespace b2a
