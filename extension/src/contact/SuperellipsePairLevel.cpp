@@ -89,6 +89,55 @@ inline double Residual(const Gauge& ga, const Gauge& gb, double mu, double r[3])
 	const double levelScale = ga.psi * ga.psi + gb.psi * gb.psi + 1e-300;
 	return std::sqrt((r[0] * r[0] + r[1] * r[1]) / gradScale + r[2] * r[2] / levelScale);
 }
+
+// The cold start: the point of the centre line ξ = t·c where both levels agree (the generic
+// solver's GeometricStart, in closed form along the line). Along it each level is a sum of two
+// powers, fA = αx·t^nA + αy·t^mA with α = |c·(1/a, 1/b)|^(n, m), and fB the same in 1 − t with
+// B's exponents and e = Rᵀc: fA rises from 0 and fB falls to 0, so h = fA^{1/p} − fB^{1/p} has
+// one root in (0, 1). With p the smallest exponent (taken down to 2, 4 or 8, for square
+// roots) each f^{1/p} is nearly linear in t, exactly so when the exponents are all equal,
+// where Newton lands on the root in one step; a bracket that bisection keeps catches the rest.
+// False when the levels vanish (coincident centres).
+bool CentreLineStart(const PairInA& p, double& t)
+{
+	const SuperellipseTerms &a = p.a, &b = p.b;
+	const Vec2 e = InvRotate(p.r, p.c);
+	const double ax = PowAbs(p.c.x * a.invA, a.n, a.nInt), ay = PowAbs(p.c.y * a.invB, a.m, a.mInt);
+	const double bx = PowAbs(e.x * b.invA, b.n, b.nInt), by = PowAbs(e.y * b.invB, b.m, b.mInt);
+	if (!(ax + ay > 0.0) || !(bx + by > 0.0) || !std::isfinite(ax + ay + bx + by))
+		return false;
+	const double lowest = std::min(std::min(a.n, a.m), std::min(b.n, b.m));
+	const double root = lowest >= 8.0 ? 8.0 : (lowest >= 4.0 ? 4.0 : 2.0);
+	// f(s) = αx·s^n + αy·s^m, its p-th root r and dr/ds = r·f'/(p·f).
+	auto side = [&](const SuperellipseTerms& k, double wx, double wy, double at, double& slope) {
+		const double sn = PowAbs(at, k.n, k.nInt), sm = PowAbs(at, k.m, k.mInt);
+		const double f = wx * sn + wy * sm;
+		const double r = RootOf(f, root);
+		slope = f > 0.0 ? r * (k.n * wx * sn + k.m * wy * sm) / (at * root * f) : 0.0;
+		return r;
+	};
+	double lo = 0.0, hi = 1.0;
+	t = 0.5;
+	for (int it = 0; it < 60; ++it)
+	{
+		double slopeA = 0.0, slopeB = 0.0;
+		const double h = side(a, ax, ay, t, slopeA) - side(b, bx, by, 1.0 - t, slopeB);
+		if (!std::isfinite(h))
+			return false;
+		if (h == 0.0)
+			return true;
+		(h < 0.0 ? lo : hi) = t;
+		const double slope = slopeA + slopeB;
+		double next = slope > 0.0 ? t - h / slope : 0.5 * (lo + hi);
+		if (!(next > lo && next < hi))
+			next = 0.5 * (lo + hi);
+		const double moved = std::fabs(next - t);
+		t = next;
+		if (moved <= 1e-12 || hi - lo <= 1e-12)
+			return true;
+	}
+	return true; // a start, not an answer: the bracket is narrow by now
+}
 } // namespace
 
 const SuperellipseShape* AsSmoothSuperellipse(const Shape& s)
@@ -141,14 +190,14 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	}
 	else
 	{
-		const PairFrame f(a, pa, b, pb);
-		Vec2 start;
-		if (!GeometricStart(f, start, mu))
+		double t = 0.5;
+		if (!CentreLineStart(p, t))
 		{
 			result.failure = "coincident centres: no common-level point between them";
 			return result;
 		}
-		xi = ToBody(pa, f.World(start)) / size;
+		xi = t * p.c;
+		mu = 0.0; // from the gradients there, below
 	}
 
 	// Two evaluated points, the current one and the trial, swapped when a trial is accepted.
@@ -170,6 +219,14 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	Point* current = &points[0];
 	Point* trial = &points[1];
 	evaluate(*current, xi, mu);
+	if (mu == 0.0)
+	{
+		// Cold: μ balancing the gradients at the start, |∇ψA|/|∇ψB| (GeometricStart's).
+		const double ga = std::sqrt(current->A.gx * current->A.gx + current->A.gy * current->A.gy);
+		const double gb = std::sqrt(current->B.gx * current->B.gx + current->B.gy * current->B.gy);
+		current->mu = ga > 0.0 && gb > 0.0 && std::isfinite(ga / gb) ? ga / gb : 1.0;
+		current->relative = Residual(current->A, current->B, current->mu, current->r);
+	}
 	const double trust = std::max(0.5, 0.5 * Length(p.c));
 	const int cap = std::max(1, options.maxIterations);
 	double previousXi = 0.0, previousMu = 0.0; // the last full step's size in ξ and in μ/μ (0: none yet)
@@ -200,12 +257,11 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 				}
 			}
 		}
-		// Jacobian of (∇ψA + μ∇ψB, ψA − ψB) with respect to (ξ, μ). (A Hessian that is not finite
-		// makes it singular to Solve3.)
+		// Jacobian of (∇ψA + μ∇ψB, ψA − ψB) with respect to (ξ, μ): [[H, ∇ψB], [(∇ψA − ∇ψB)ᵀ, 0]]
+		// with H = ∇²ψA + μ∇²ψB. (A Hessian that is not finite makes it singular to the solve.)
 		const double hxx = q.A.hxx + q.mu * q.B.hxx, hxy = q.A.hxy + q.mu * q.B.hxy, hyy = q.A.hyy + q.mu * q.B.hyy;
-		const double J[3][3] = {{hxx, hxy, q.B.gx}, {hxy, hyy, q.B.gy}, {q.A.gx - q.B.gx, q.A.gy - q.B.gy, 0.0}};
 		const double minusR[3] = {-q.r[0], -q.r[1], -q.r[2]};
-		const Solve3Result step = Solve3(J, minusR);
+		const Solve3Result step = SolveBordered(hxx, hxy, hyy, q.B.gx, q.B.gy, q.A.gx - q.B.gx, q.A.gy - q.B.gy, minusR);
 		if (!(step.rcond > 1e-14))
 		{
 			if (q.relative < 1e-11)

@@ -59,7 +59,10 @@ inline LevelDerivatives RawSuperellipseDerivatives(const SuperellipseTerms& t, V
 	const double ym1 = t.m >= 2.0 ? ym2 * ay : PowAbs(ay, t.m - 1.0, t.mInt >= 1 ? t.mInt - 1 : -1);
 	LevelDerivatives d;
 	d.value = xn1 * ax + ym1 * ay;
-	d.gradient = Vec2(t.gradX * SignOf(X) * xn1, t.gradY * SignOf(Y) * ym1);
+	// sgn(X)|X|^{n−1} as copysign where n ≥ 2 (|X|^{n−1} vanishes on the axis, so the sign of
+	// zero does not matter there): no branch on the sign.
+	d.gradient = Vec2(t.gradX * (t.n >= 2.0 ? std::copysign(xn1, X) : SignOf(X) * xn1),
+	                  t.gradY * (t.m >= 2.0 ? std::copysign(ym1, Y) : SignOf(Y) * ym1));
 	d.hessian.xx = t.hessX * xn2;
 	d.hessian.yy = t.hessY * ym2;
 	d.hessian.xy = 0.0;
@@ -102,17 +105,22 @@ inline bool SuperellipseFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, 
 	const double p = std::min(s.n, s.m);
 	const int nk = s.nInt >= 1 ? s.nInt - 1 : -1, mk = s.mInt >= 1 ? s.mInt - 1 : -1;
 	double g = 0.0, slope = 0.0;
+	// (No finiteness test per evaluation: a NaN or infinite level makes the slope NaN or the
+	// step non-finite, which the tests on the slope and the step below turn into `false`.)
 	auto gauge = [&](double f, double df) {
 		const double r = RootOf(f, p);
 		g = r - 1.0;
 		slope = f > 0.0 ? r / (p * f) * df : 0.0;
-		return std::isfinite(g) && std::isfinite(slope);
+		return true;
 	};
 	auto evaluate = [&](double at) {
 		const double u = X + at * D, v = Y + at * E;
 		const double au = std::fabs(u), av = std::fabs(v);
 		const double un1 = PowAbs(au, s.n - 1.0, nk), vm1 = PowAbs(av, s.m - 1.0, mk);
-		return gauge(un1 * au + vm1 * av, s.n * un1 * SignOf(u) * D + s.m * vm1 * SignOf(v) * E);
+		// sgn(u)|u|^{n−1} as in RawSuperellipseDerivatives.
+		const double su = s.n >= 2.0 ? std::copysign(un1, u) : SignOf(u) * un1;
+		const double sv = s.m >= 2.0 ? std::copysign(vm1, v) : SignOf(v) * vm1;
+		return gauge(un1 * au + vm1 * av, s.n * su * D + s.m * sv * E);
 	};
 	t = 0.0;
 	if (!(known ? gauge(known[0], known[1]) : evaluate(0.0)))
