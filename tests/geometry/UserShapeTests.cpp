@@ -182,3 +182,31 @@ TEST_CASE("user shape: levelOf replaces the root solve, and the declared flags a
 	CHECK(RelativeError(user->Mass().area, kPi * 2.0 * 1.2) < 1e-13);
 	CHECK(RelativeError(user->SurfacePoint(0.7).x, MakeEllipse(2.0, 1.2)->SurfacePoint(0.7).x) < 1e-14);
 }
+
+TEST_CASE("user shape: corner angles given as any angle are kept within one half turn of zero, and NearCorner finds them across the wrap")
+{
+	// The heart's corners given a few turns away (and one far away): stored wrapped, as
+	// CornerAngles promises, so NearCorner (which compares angles in [−π, π] without a
+	// remainder) finds them.
+	UserShapeDef def = UserHeartDef(1.0);
+	def.cornerAngles = {0.5 * kPi + 6.0 * kPi, -0.5 * kPi - 1e6 * kPi};
+	const auto user = MakeUserShape(def);
+	REQUIRE(user->CornerAngles().size() == 2);
+	CHECK(std::fabs(user->CornerAngles()[0] + 0.5 * kPi) <= 1e-9);
+	CHECK(std::fabs(user->CornerAngles()[1] - 0.5 * kPi) <= 1e-14); // (6π + π/2 carries 6π's rounding)
+	for (double c : user->CornerAngles())
+	{
+		CHECK(c >= -kPi);
+		CHECK(c < kPi);
+	}
+	CHECK(user->NearCorner(0.5 * kPi + 1e-8, 1e-7));
+	CHECK(!user->NearCorner(0.5 * kPi + 1e-6, 1e-7));
+	CHECK(!user->NearCorner(0.0, 1e-7));
+	// A corner at −π is near θ = π (the same direction).
+	const auto square = MakeSuperellipse(1.0, 1.0, 2.0, 1.0); // m = 1: corners at 0 and −π
+	REQUIRE(square->CornerAngles().size() == 2);
+	CHECK(square->NearCorner(kPi, 1e-12));
+	CHECK(square->NearCorner(kPi - 1e-13, 1e-12));
+	CHECK(square->NearCorner(-kPi + 1e-13, 1e-12));
+	CHECK(!square->NearCorner(0.5 * kPi, 1e-12));
+}

@@ -190,6 +190,20 @@ public:
 
 	/// Polar angles (in [-π, π)) where the surface has corners; quadrature and sampling split there.
 	const std::vector<double>& CornerAngles() const { return m_corners; }
+	/// True when the polar angle θ (in [−π, π], as atan2 gives it) lies within tol of a corner.
+	bool NearCorner(double theta, double tol) const
+	{
+		for (double c : m_corners)
+		{
+			// Both angles lie in [−π, π], so one turn at most separates them (no remainder call).
+			double d = std::fabs(theta - c);
+			if (d > kPi)
+				d = 2.0 * kPi - d;
+			if (d < tol)
+				return true;
+		}
+		return false;
+	}
 
 	/// Surface samples at the own level (count ≥ 3), computed on first use and cached.
 	std::shared_ptr<const SurfaceSamples> Samples(int count = kDefaultSampleCount) const;

@@ -93,11 +93,7 @@ bool AtCorner(const Shape& s, Vec2 x)
 {
 	if (s.CornerAngles().empty() || !(LengthSquared(x) > 0.0))
 		return false;
-	const double theta = std::atan2(x.y, x.x);
-	for (double corner : s.CornerAngles())
-		if (std::fabs(std::remainder(theta - corner, 2.0 * kPi)) < 1e-7)
-			return true;
-	return false;
+	return s.NearCorner(std::atan2(x.y, x.x), 1e-7);
 }
 
 // A convex shape's extreme point along `dir` on the line X + t·dir (the largest root of

@@ -114,13 +114,7 @@ bool RefineNewton(const SurfaceWalk& walk, double lo, double hi, double mid, Vec
 }
 
 // True when the polar angle is one of the shape's corners (samples sit on corners exactly).
-bool IsCorner(const Shape& s, double theta)
-{
-	for (double c : s.CornerAngles())
-		if (std::fabs(std::remainder(theta - c, 2.0 * kPi)) < 1e-12)
-			return true;
-	return false;
-}
+bool IsCorner(const Shape& s, double theta) { return s.NearCorner(theta, 1e-12); }
 
 // Where B's level-LB curve crosses the ray of one of A's corners (A's body frame) between the
 // neighbours pl and ph of a sample. Along that ray λA is not differentiable: at the heart's tip
@@ -229,6 +223,13 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 	if (theta != sampleTheta)
 		point = walk.b.SurfacePoint(theta, walk.levelB);
 }
+// SolveGridScale's work arrays, one set per thread.
+struct GridScratch
+{
+	std::vector<double> value, scanned;
+	std::vector<std::pair<double, int>> order;
+	std::vector<int> minima;
+};
 } // namespace
 
 LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
@@ -242,8 +243,11 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	SurfaceWalk walk{a, b, Relative(pa, pb), LB};
 
 	// Level of A at every sample of B's surface (the paper's grid).
-	// Unevaluated samples stay at +∞.
-	std::vector<double> value(n, std::numeric_limits<double>::infinity());
+	// Unevaluated samples stay at +∞. The work arrays are the thread's own, kept between calls:
+	// allocating them on every call was a tenth of a heart contact.
+	thread_local GridScratch scratch;
+	std::vector<double>& value = scratch.value;
+	value.assign(n, std::numeric_limits<double>::infinity());
 	const bool ownLevel = LB == b.SurfaceLevel();
 	auto evaluate = [&](int k) {
 		const Vec2 p = ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB);
@@ -252,7 +256,8 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	};
 	bool ok = true;
 	const int runs = int(samples->runCentre.size());
-	std::vector<std::pair<double, int>> order;
+	std::vector<std::pair<double, int>>& order = scratch.order;
+	order.clear();
 	if (ownLevel && runs > 0)
 	{
 		// Branch and bound over runs of samples: runs in the order of A's lower bound over their
@@ -281,11 +286,14 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				break;
 			const int first = g * SurfaceSamples::kRunLength, last = std::min(first + SurfaceSamples::kRunLength, n);
 			for (int k = first; k <= last && ok; ++k)
-				if (value[k % n] == std::numeric_limits<double>::infinity())
+			{
+				const int j = k == n ? 0 : k; // (a run's last sample is the next run's first; no %: a division each)
+				if (value[j] == std::numeric_limits<double>::infinity())
 				{
-					ok = evaluate(k % n);
-					lowest = std::min(lowest, value[k % n]);
+					ok = evaluate(j);
+					lowest = std::min(lowest, value[j]);
 				}
+			}
 		}
 	}
 	else
@@ -295,14 +303,16 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	}
 	// Local minima of the cyclic sequence, lowest first. At the edge of a skipped run the
 	// neighbour is evaluated first, so that the edge is a minimum only if it is one.
-	std::vector<int> minima;
+	std::vector<int>& minima = scratch.minima;
+	minima.clear();
 	const double unset = std::numeric_limits<double>::infinity();
-	const std::vector<double> scanned = value; // the edges' neighbours join `value` but not the scan
+	scratch.scanned = value; // the edges' neighbours join `value` but not the scan
+	const std::vector<double>& scanned = scratch.scanned;
 	for (int k = 0; k < n; ++k)
 	{
 		if (scanned[k] == unset)
 			continue;
-		const int before = (k + n - 1) % n, after = (k + 1) % n;
+		const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
 		if (value[before] == unset)
 			ok = ok && evaluate(before); // a NaN stops all evaluation; reported below
 		if (value[after] == unset)

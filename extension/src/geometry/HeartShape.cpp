@@ -1,6 +1,8 @@
 // b2analytic: heart-shaped particle.
 #include "b2analytic/HeartShape.h"
 
+#include "numerics/Powers.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -29,7 +31,7 @@ double HeartShape::LengthHint() const
 double HeartShape::Level(Vec2 x) const
 {
 	// (r² − α)³ = x² y³  ⇔  α = r² − cbrt(x² y³), and (r² − α)³ is decreasing in α.
-	return x.x * x.x + x.y * x.y - std::cbrt(x.x * x.x) * x.y;
+	return x.x * x.x + x.y * x.y - CubeRoot(x.x * x.x) * x.y;
 }
 
 LevelDerivatives HeartShape::Derivatives(Vec2 x) const
@@ -39,7 +41,7 @@ LevelDerivatives HeartShape::Derivatives(Vec2 x) const
 	//   ∂xx = 2 + (2/9) |x|^{−4/3} y,  ∂xy = −(2/3) sgn(x) |x|^{−1/3},  ∂yy = 2.
 	LevelDerivatives d;
 	const double ax = std::fabs(x.x);
-	const double c = std::cbrt(ax); // |x|^{1/3}
+	const double c = CubeRoot(ax); // |x|^{1/3}
 	d.value = x.x * x.x + x.y * x.y - c * c * x.y;
 	d.hessian.yy = 2.0;
 	d.gradient.y = 2.0 * x.y - c * c;
@@ -65,7 +67,7 @@ double HeartShape::LevelLowerBound(Vec2 centre, double radius) const
 	const double dx = std::max(std::fabs(centre.x) - radius, 0.0), dy = std::max(std::fabs(centre.y) - radius, 0.0);
 	const double top = centre.y + radius;
 	const double reach = top > 0.0 ? std::fabs(centre.x) + radius : dx;
-	return dx * dx + dy * dy - std::cbrt(reach * reach) * top;
+	return dx * dx + dy * dy - CubeRoot(reach * reach) * top;
 }
 
 double HeartShape::RadiusAt(Vec2 u, double level) const
@@ -77,7 +79,7 @@ double HeartShape::RadiusAt(Vec2 u, double level) const
 	// Newton descends monotonically onto the root.
 	if (!(level > 0.0))
 		return 0.0;
-	const double k = std::cbrt(u.x * u.x * u.y * u.y * u.y);
+	const double k = CubeRoot(u.x * u.x * u.y * u.y * u.y);
 	double s = std::max(k, 0.0) + std::pow(level, 1.0 / 6.0);
 	for (int it = 0; it < 100; ++it)
 	{

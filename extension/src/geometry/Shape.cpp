@@ -75,7 +75,10 @@ Shape::~Shape() = default;
 
 void Shape::AddCorner(double theta)
 {
-	m_corners.push_back(theta);
+	// Kept in [−π, π), as CornerAngles promises (a user's corner may be given as any angle; one
+	// remainder, as WrapAngle below, wraps even 1e300).
+	theta = std::remainder(theta, 2.0 * kPi);
+	m_corners.push_back(theta >= kPi ? theta - 2.0 * kPi : theta);
 	std::sort(m_corners.begin(), m_corners.end());
 	m_serial = g_nextSerial.fetch_add(1, std::memory_order_relaxed); // the dense pass depends on the corners
 }

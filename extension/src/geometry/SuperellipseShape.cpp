@@ -249,8 +249,8 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 		}
 		if (p == 4.0)
 		{
-			// q = 4/3: |e_i|^{1/3} by cbrt, and ‖e‖_q^{1/3} = (Σ|e_i|^{4/3})^{1/4} by two roots.
-			const double px = std::cbrt(std::fabs(e.x)), py = std::cbrt(std::fabs(e.y));
+			// q = 4/3: |e_i|^{1/3} by CubeRoot, and ‖e‖_q^{1/3} = (Σ|e_i|^{4/3})^{1/4} by two roots.
+			const double px = CubeRoot(std::fabs(e.x)), py = CubeRoot(std::fabs(e.y));
 			const double norm = std::sqrt(std::sqrt(px * std::fabs(e.x) + py * std::fabs(e.y)));
 			return Vec2(m_a * SignOf(e.x) * px / norm, m_b * SignOf(e.y) * py / norm);
 		}

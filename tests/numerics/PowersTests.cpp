@@ -1,0 +1,76 @@
+// RootOf and CubeRoot (numerics/Powers.h) against long-double references.
+#include <doctest/doctest.h>
+
+#include "TestSupport.h"
+#include "numerics/Powers.h"
+
+#include <cmath>
+#include <limits>
+
+using namespace b2a;
+using namespace b2a::test;
+
+namespace
+{
+// |got − want| in units of want's ulp (long double want, rounded to double's spacing there).
+double Ulps(double got, long double want)
+{
+	const double w = double(want);
+	const double ulp = std::nextafter(std::fabs(w), std::numeric_limits<double>::infinity()) - std::fabs(w);
+	return double(std::fabs((long double)got - want) / ulp);
+}
+} // namespace
+
+TEST_CASE("powers: CubeRoot is within an ulp of the exact cube root from 1e-290 to 1e290, both signs")
+{
+	// (glibc's std::cbrt, which CubeRoot hands the rest of the range to, is up to 3.2 ulp off.)
+	Random rng(5);
+	double worst = 0.0;
+	for (int k = 0; k < 200000; ++k)
+	{
+		const double x = (k % 2 ? -1.0 : 1.0) * std::exp(rng.Uniform(-667.0, 667.0));
+		const double got = CubeRoot(x);
+		worst = std::max(worst, Ulps(got, cbrtl((long double)x)));
+		REQUIRE(std::signbit(got) == std::signbit(x));
+	}
+	// Exact cubes.
+	for (double r : {1.0, 2.0, 3.0, 10.0, 0.5, 1e-90, 7e90})
+		worst = std::max(worst, Ulps(CubeRoot(r * r * r), cbrtl((long double)(r * r * r))));
+	CAPTURE(worst);
+	CHECK(worst <= 1.0);
+}
+
+TEST_CASE("powers: CubeRoot hands zero, the ends of the range, infinities and NaN to std::cbrt")
+{
+	CHECK(CubeRoot(0.0) == 0.0);
+	CHECK(std::signbit(CubeRoot(-0.0)));
+	const double sub = 1e-310;
+	CHECK(CubeRoot(sub) == std::cbrt(sub));
+	CHECK(CubeRoot(-sub) == std::cbrt(-sub));
+	CHECK(CubeRoot(std::numeric_limits<double>::infinity()) == std::numeric_limits<double>::infinity());
+	CHECK(CubeRoot(-std::numeric_limits<double>::infinity()) == -std::numeric_limits<double>::infinity());
+	CHECK(std::isnan(CubeRoot(std::nan(""))));
+	// The ends of double's range.
+	for (double x : {std::numeric_limits<double>::max(), std::numeric_limits<double>::min(), 1e300, -1e-300})
+		CHECK(CubeRoot(x) == std::cbrt(x));
+}
+
+TEST_CASE("powers: RootOf is t^(1/e) by square roots for e = 2, 4, 8 and by pow otherwise")
+{
+	// By square roots, each correctly rounded: within 2 ulp. By pow, 1/e is itself rounded, which
+	// costs |ln t| times its relative error (up to ~700 · 1e-16 here).
+	Random rng(6);
+	double worstRoots = 0.0, worstPow = 0.0;
+	for (int k = 0; k < 20000; ++k)
+	{
+		const double t = std::exp(rng.Uniform(-300.0, 300.0));
+		for (double e : {2.0, 4.0, 8.0})
+			worstRoots = std::max(worstRoots, Ulps(RootOf(t, e), powl((long double)t, 1.0L / (long double)e)));
+		for (double e : {3.0, 2.5})
+			worstPow = std::max(worstPow, Ulps(RootOf(t, e), powl((long double)t, 1.0L / (long double)e)));
+	}
+	CAPTURE(worstRoots);
+	CAPTURE(worstPow);
+	CHECK(worstRoots <= 2.0);
+	CHECK(worstPow <= 200.0);
+}
