@@ -278,19 +278,22 @@ ContactResult CircleContact(const Shape& a, const Pose& pa, const Shape& b, cons
 
 namespace
 {
-// A plain ellipse's point on the line through X along `dir`: X itself when it lies on the
-// surface, else the far crossing in closed form (ContactFromLevel's rule for convex shapes, with
-// direct calls on the final class). False where the line misses the ellipse.
-bool EllipseLinePoint(const SuperellipseShape& e, const Pose& p, Vec2 X, Vec2 dir, Vec2& point)
+// A superellipse's point on the line through X along `dir` (ContactFromLevel's rule for convex
+// shapes, with direct calls on the final class): X itself when it lies on the surface, else the
+// far crossing, in closed form for an ellipse and by Newton otherwise, whose first step starts
+// from `known` = {λ(X), ∇λ(X)·dir} where the caller has them. False where the line misses.
+bool SuperellipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 dir, const double* known, Vec2& point)
 {
 	const Vec2 x = ToBody(p, X);
-	if (std::fabs(e.Level(x) - 1.0) <= 1e-10)
+	if (std::fabs((known ? known[0] : s.Level(x)) - 1.0) <= 1e-10)
 	{
 		point = X;
 		return true;
 	}
 	double t = 0.0;
-	if (!e.FarCrossing(x, InvRotate(p.q, dir), t))
+	const Vec2 d = InvRotate(p.q, dir);
+	const bool ellipse = s.N() == 2.0 && s.M() == 2.0;
+	if (!(ellipse ? s.FarCrossing(x, d, t) : SuperellipseFarCrossing(s.Terms(), x, d, t, known)))
 		return false;
 	point = X + t * dir;
 	return true;
@@ -321,8 +324,8 @@ ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, con
 		c.pointA = points.a;
 		c.pointB = points.b;
 	}
-	else if (!EllipseLinePoint(*ea, pa, level.point, c.normal, c.pointA) ||
-	         !EllipseLinePoint(*eb, pb, level.point, -c.normal, c.pointB))
+	else if (!SuperellipseLinePoint(*ea, pa, level.point, c.normal, nullptr, c.pointA) ||
+	         !SuperellipseLinePoint(*eb, pb, level.point, -c.normal, nullptr, c.pointB))
 	{
 		return ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
 	}
@@ -348,26 +351,11 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 	ContactResult c = ContactOfLevel(level);
 	// ContactNormal's mean of the unit normals (they are opposed: the solve checked).
 	c.normal = Normalize(at.normalA - at.normalB);
-	const Vec2 X = level.point;
-	// ContactFromLevel's points: X itself on a surface, else the far crossing along the normal,
-	// its first Newton step from the level and gradient the solve ended with.
-	auto crossing = [&](const SuperellipseShape& s, const Pose& ps, double lambda, Vec2 grad, Vec2 dir, Vec2& point) {
-		if (std::fabs(lambda - 1.0) <= 1e-10)
-		{
-			point = X;
-			return true;
-		}
-		double t = 0.0;
-		const double known[2] = {lambda, Dot(grad, dir)};
-		const Vec2 x = ToBody(ps, X), d = InvRotate(ps.q, dir);
-		const bool ellipse = s.N() == 2.0 && s.M() == 2.0; // the closed form
-		if (!(ellipse ? s.FarCrossing(x, d, t) : SuperellipseFarCrossing(s.Terms(), x, d, t, known)))
-			return false;
-		point = X + t * dir;
-		return true;
-	};
-	if (!crossing(*sa, pa, at.levelA, at.gradA, c.normal, c.pointA) ||
-	    !crossing(*sb, pb, at.levelB, at.gradB, -c.normal, c.pointB))
+	// ContactFromLevel's points, the first step of each line crossing from the level and
+	// gradient the solve ended with.
+	const double knownA[2] = {at.levelA, Dot(at.gradA, c.normal)}, knownB[2] = {at.levelB, -Dot(at.gradB, c.normal)};
+	if (!SuperellipseLinePoint(*sa, pa, level.point, c.normal, knownA, c.pointA) ||
+	    !SuperellipseLinePoint(*sb, pb, level.point, -c.normal, knownB, c.pointB))
 		return ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
 	SetSeparation(c, level.level <= 1.0);
 	return c;
