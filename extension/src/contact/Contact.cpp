@@ -350,7 +350,7 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 	RecordWarmStart(warm, pa, pb, level);
 	ContactResult c = ContactOfLevel(level);
 	// ContactNormal's mean of the unit normals (they are opposed: the solve checked).
-	c.normal = Normalize(at.normalA - at.normalB);
+	c.normal = Normalize(Normalize(at.gradA) - Normalize(at.gradB));
 	// ContactFromLevel's points, the first step of each line crossing from the level and
 	// gradient the solve ended with.
 	const double knownA[2] = {at.levelA, Dot(at.gradA, c.normal)}, knownB[2] = {at.levelB, -Dot(at.gradB, c.normal)};

@@ -55,9 +55,7 @@ const SuperellipseShape* AsSmoothSuperellipse(const Shape& s);
 /// follow from it without evaluating the shapes again.
 struct SuperellipsePairPoint
 {
-	Vec2 normalA;         ///< unit ∇λA at the point, world frame
-	Vec2 normalB;         ///< unit ∇λB there
-	Vec2 gradA;           ///< ∇λA itself (world frame and units)
+	Vec2 gradA;           ///< ∇λA at the point (world frame and units)
 	Vec2 gradB;           ///< ∇λB there
 	double levelA = 0.0;  ///< λA there
 	double levelB = 0.0;  ///< λB there

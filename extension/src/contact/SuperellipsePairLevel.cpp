@@ -377,8 +377,6 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	{
 		at->gradA = Rotate(pa.q, Vec2(q.A.fx, q.A.fy)) / size;
 		at->gradB = Rotate(pa.q, Vec2(q.B.fx, q.B.fy)) / size;
-		at->normalA = result.normal;
-		at->normalB = Rotate(pa.q, nB);
 		at->levelA = q.A.lambda;
 		at->levelB = q.B.lambda;
 		at->valid = IsFinite(at->gradA) && IsFinite(at->gradB);
