@@ -226,7 +226,8 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 // SolveGridScale's work arrays, one set per thread.
 struct GridScratch
 {
-	std::vector<double> value, scanned;
+	std::vector<double> value, bound;
+	std::vector<char> scanned; // per run: evaluated whole
 	std::vector<std::pair<double, int>> order;
 	std::vector<int> minima;
 };
@@ -247,78 +248,104 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	// allocating them on every call was a tenth of a heart contact.
 	thread_local GridScratch scratch;
 	std::vector<double>& value = scratch.value;
-	value.assign(n, std::numeric_limits<double>::infinity());
+	const double unset = std::numeric_limits<double>::infinity();
+	value.assign(n, unset);
 	const bool ownLevel = LB == b.SurfaceLevel();
 	auto evaluate = [&](int k) {
 		const Vec2 p = ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB);
 		value[k] = a.Level(ToWorld(walk.bInA, p));
 		return !std::isnan(value[k]);
 	};
+	// Samples are scanned a run at a time: run g is samples g·kRunLength … (g+1)·kRunLength, its
+	// last sample being the next run's first (sample 0 for the last run).
+	const int runs = (n + SurfaceSamples::kRunLength - 1) / SurfaceSamples::kRunLength;
+	auto runSamples = [&](int g, int& first, int& last) {
+		first = g * SurfaceSamples::kRunLength;
+		last = std::min(first + SurfaceSamples::kRunLength, n);
+	};
+	std::vector<char>& scanned = scratch.scanned;
+	scanned.assign(runs, 0);
 	bool ok = true;
-	const int runs = int(samples->runCentre.size());
-	std::vector<std::pair<double, int>>& order = scratch.order;
-	order.clear();
-	if (ownLevel && runs > 0)
+	bool bounded = ownLevel && int(samples->runCentre.size()) == runs;
+	std::vector<double>& bound = scratch.bound;
+	if (bounded)
 	{
-		// Branch and bound over runs of samples: runs in the order of A's lower bound over their
-		// discs, each evaluated whole, until a run's bound exceeds the lowest level found so far.
-		// The skipped runs cannot hold anything lower (the bound covers the curve between the
-		// samples too), so the minima refined below are those of the full scan.
-		order.reserve(runs);
-		for (int g = 0; g < runs; ++g)
+		bound.resize(runs);
+		for (int g = 0; g < runs && bounded; ++g)
 		{
-			const double bound = a.LevelLowerBound(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]);
-			if (!(bound > -std::numeric_limits<double>::infinity()))
-			{
-				order.clear(); // no bound from this shape: scan everything
-				break;
-			}
-			order.emplace_back(bound, g);
+			bound[g] = a.LevelLowerBound(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]);
+			bounded = bound[g] > -std::numeric_limits<double>::infinity(); // else no bound: scan everything
 		}
 	}
-	if (!order.empty())
+	if (bounded)
 	{
-		std::sort(order.begin(), order.end());
-		double lowest = std::numeric_limits<double>::infinity();
-		for (const auto& [bound, g] : order)
-		{
-			if (bound > lowest)
-				break;
-			const int first = g * SurfaceSamples::kRunLength, last = std::min(first + SurfaceSamples::kRunLength, n);
+		// Branch and bound over runs: runs in the order of A's lower bound over their discs,
+		// each evaluated whole, until a run's bound exceeds the lowest level found so far. The
+		// skipped runs cannot hold anything lower (the bound covers the curve between the
+		// samples too), so the minima refined below are those of the full scan. The run of the
+		// lowest bound goes first; only the runs whose bound is below the level found there are
+		// sorted (sorting all of them was a tenth of a heart contact).
+		double lowest = unset;
+		auto scan = [&](int g) {
+			scanned[g] = 1;
+			int first, last;
+			runSamples(g, first, last);
 			for (int k = first; k <= last && ok; ++k)
 			{
-				const int j = k == n ? 0 : k; // (a run's last sample is the next run's first; no %: a division each)
-				if (value[j] == std::numeric_limits<double>::infinity())
+				const int j = k == n ? 0 : k; // (no %: a division each)
+				if (value[j] == unset)
 				{
 					ok = evaluate(j);
 					lowest = std::min(lowest, value[j]);
 				}
 			}
+		};
+		const int best = int(std::min_element(bound.begin(), bound.end()) - bound.begin());
+		scan(best);
+		std::vector<std::pair<double, int>>& order = scratch.order;
+		order.clear();
+		for (int g = 0; g < runs; ++g)
+			if (g != best && bound[g] <= lowest)
+				order.emplace_back(bound[g], g);
+		std::sort(order.begin(), order.end());
+		for (const auto& [runBound, g] : order)
+		{
+			if (runBound > lowest || !ok)
+				break;
+			scan(g);
 		}
 	}
 	else
 	{
 		for (int k = 0; k < n && ok; ++k)
 			ok = evaluate(k);
+		scanned.assign(runs, 1);
 	}
-	// Local minima of the cyclic sequence, lowest first. At the edge of a skipped run the
-	// neighbour is evaluated first, so that the edge is a minimum only if it is one.
+	// Local minima of the cyclic sequence over the scanned runs, lowest first. At the edge of a
+	// skipped run the neighbour is evaluated first, so that the edge is a minimum only if it is
+	// one. Each scanned sample is visited once: a run's last sample belongs to the next run when
+	// that one was scanned too.
 	std::vector<int>& minima = scratch.minima;
 	minima.clear();
-	const double unset = std::numeric_limits<double>::infinity();
-	scratch.scanned = value; // the edges' neighbours join `value` but not the scan
-	const std::vector<double>& scanned = scratch.scanned;
-	for (int k = 0; k < n; ++k)
+	for (int g = 0; g < runs && ok; ++g)
 	{
-		if (scanned[k] == unset)
+		if (!scanned[g])
 			continue;
-		const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
-		if (value[before] == unset)
-			ok = ok && evaluate(before); // a NaN stops all evaluation; reported below
-		if (value[after] == unset)
-			ok = ok && evaluate(after);
-		if (value[k] <= value[before] && value[k] < value[after])
-			minima.push_back(k);
+		int first, last;
+		runSamples(g, first, last);
+		if (scanned[g + 1 == runs ? 0 : g + 1])
+			--last;
+		for (int i = first; i <= last; ++i)
+		{
+			const int k = i == n ? 0 : i;
+			const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
+			if (value[before] == unset)
+				ok = ok && evaluate(before); // a NaN stops all evaluation; reported below
+			if (value[after] == unset)
+				ok = ok && evaluate(after);
+			if (value[k] <= value[before] && value[k] < value[after])
+				minima.push_back(k);
+		}
 	}
 	if (!ok)
 	{
@@ -327,7 +354,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	}
 	if (minima.empty())
 		minima.push_back(int(std::min_element(value.begin(), value.end()) - value.begin()));
-	std::sort(minima.begin(), minima.end(), [&](int i, int j) { return value[i] < value[j]; });
+	std::sort(minima.begin(), minima.end(), [&](int i, int j) { return value[i] < value[j] || (value[i] == value[j] && i < j); });
 	if (int(minima.size()) > options.gridCandidates)
 		minima.resize(std::max(1, options.gridCandidates));
 
