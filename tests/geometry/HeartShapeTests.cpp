@@ -196,9 +196,10 @@ TEST_CASE("heart: area and moments agree with an independent polar integral and 
 	}
 }
 
-TEST_CASE("heart: LevelLowerBound is below the level everywhere on the disc, and close where the disc is far")
+TEST_CASE("heart: LevelLowerBound and LevelUpperBound bracket the level everywhere on the disc, and are close where the disc is far")
 {
-	// Reference: the smallest level over 40 rings of 120 points covering the disc, and its centre.
+	// Reference: the smallest and largest levels over 40 rings of 120 points covering the disc,
+	// and its centre.
 	Random rng(31);
 	for (double alpha : {0.3, 1.0, 4.0})
 	{
@@ -208,23 +209,33 @@ TEST_CASE("heart: LevelLowerBound is below the level everywhere on the disc, and
 		{
 			const Vec2 c(rng.Uniform(-3.0 * R, 3.0 * R), rng.Uniform(-3.0 * R, 3.0 * R));
 			const double r = rng.LogUniform(1e-3 * R, R);
-			double lowest = h->Level(c);
+			double lowest = h->Level(c), highest = lowest;
 			for (int ring = 1; ring <= 40; ++ring)
 				for (int k = 0; k < 120; ++k)
 				{
 					const double t = 2.0 * kPi * k / 120.0;
-					lowest = std::min(lowest, h->Level(c + (r * ring / 40.0) * Vec2(std::cos(t), std::sin(t))));
+					const double level = h->Level(c + (r * ring / 40.0) * Vec2(std::cos(t), std::sin(t)));
+					lowest = std::min(lowest, level);
+					highest = std::max(highest, level);
 				}
-			const double bound = h->LevelLowerBound(c, r);
+			const double lower = h->LevelLowerBound(c, r), upper = h->LevelUpperBound(c, r);
 			CAPTURE(alpha);
 			CAPTURE(c.x);
 			CAPTURE(c.y);
 			CAPTURE(r);
-			CHECK(bound <= lowest + 1e-12 * std::fabs(lowest));
-			// Small discs far from the centre: within a few radii of the truth (α ~ |x|², so the
+			CHECK(lower <= lowest + 1e-12 * std::fabs(lowest));
+			CHECK(upper >= highest - 1e-12 * std::fabs(highest));
+			// Small discs far from the centre: within a few radii of the truth (α ~ |x|², so a
 			// bound loses about 2|c|r + the cube-root term's spread).
 			if (r < 0.01 * R && Length(c) > R)
-				CHECK(lowest - bound <= 10.0 * r * (Length(c) + 1.0));
+			{
+				CHECK(lowest - lower <= 10.0 * r * (Length(c) + 1.0));
+				CHECK(upper - highest <= 10.0 * r * (Length(c) + 1.0));
+			}
 		}
 	}
+	// A disc of radius 0 is its centre; the default shape has no upper bound.
+	const auto h = MakeHeart(1.0);
+	CHECK(h->LevelUpperBound(Vec2(0.3, -0.2), 0.0) == doctest::Approx(h->Level(Vec2(0.3, -0.2))).epsilon(1e-14));
+	CHECK(MakeSuperellipse(1.0, 0.5, 4.0, 4.0)->LevelUpperBound(Vec2(), 0.1) == std::numeric_limits<double>::infinity());
 }

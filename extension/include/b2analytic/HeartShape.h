@@ -24,6 +24,8 @@ public:
 	double RadiusAt(Vec2 u, double level) const override;
 	/// x² + y² − |x|^{2/3} y bounded term by term over the disc (one cube root).
 	double LevelLowerBound(Vec2 centre, double radius) const override;
+	/// See Shape::LevelUpperBound.
+	double LevelUpperBound(Vec2 centre, double radius) const override;
 
 	/// The size parameter α.
 	double Alpha() const { return m_alpha; }

@@ -162,6 +162,15 @@ public:
 		(void)radius;
 		return -std::numeric_limits<double>::infinity();
 	}
+	/// An upper bound of the level over the disc |x − centre| ≤ radius (body frame), with which
+	/// a line search inside a non-convex particle steps over stretches that cannot leave it.
+	/// The default, +∞, means no bound: the search marches in steps finer than the samples.
+	virtual double LevelUpperBound(Vec2 centre, double radius) const
+	{
+		(void)centre;
+		(void)radius;
+		return std::numeric_limits<double>::infinity();
+	}
 	/// Bounds lower ≤ h(d) ≤ upper on the support value h(d) = max over the particle of x·d (body
 	/// frame, d need not be unit), for tests that can often decide without h itself: a separating
 	/// axis is rejected or confirmed by the bounds alone unless the gap lies between them. The

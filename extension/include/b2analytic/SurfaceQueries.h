@@ -12,8 +12,9 @@ bool TestPoint(const Shape& shape, const Pose& pose, Vec2 point);
 /// First s in [0, sMax] at which the line X + s·dir crosses the particle's own surface, leaving
 /// the particle when X is inside it and entering it when X is outside; −1 when it does not.
 /// Convex shapes: one bracketed root (after a Brent minimisation of the level along the line
-/// when X is outside); other shapes: a march in steps finer than the surface samples, then a
-/// bracketed root. `dir` need not be unit (s is in units of |dir|).
+/// when X is outside); other shapes: a march in steps finer than the surface samples, stepping
+/// over stretches that the shape's LevelUpperBound (inside) or LevelLowerBound (outside) clears,
+/// then a bracketed root. `dir` need not be unit (s is in units of |dir|).
 double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax);
 
 /// Result of a ray cast.

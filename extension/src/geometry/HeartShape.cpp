@@ -70,6 +70,22 @@ double HeartShape::LevelLowerBound(Vec2 centre, double radius) const
 	return dx * dx + dy * dy - CubeRoot(reach * reach) * top;
 }
 
+double HeartShape::LevelUpperBound(Vec2 centre, double radius) const
+{
+	// Over |x − c| ≤ ρ: x² + y² ≤ (|c| + ρ)². The cusp term −|x|^{2/3} y is at most
+	// (|cx| + ρ)^{2/3} (ρ − cy) where the disc reaches y < 0, and where it lies above the x axis
+	// at most −dx^{2/3} (cy − ρ) with dx = (|cx| − ρ)₊ (both factors at their smallest).
+	const double r = Length(centre) + radius;
+	const double bottom = centre.y - radius;
+	if (bottom < 0.0)
+	{
+		const double wide = std::fabs(centre.x) + radius;
+		return r * r - CubeRoot(wide * wide) * bottom;
+	}
+	const double dx = std::max(std::fabs(centre.x) - radius, 0.0);
+	return r * r - CubeRoot(dx * dx) * bottom;
+}
+
 double HeartShape::RadiusAt(Vec2 u, double level) const
 {
 	// Along x = t·u: α(x) = t² − k t^{5/3} with k = cbrt(ux² uy³). With s = t^{1/3}:
