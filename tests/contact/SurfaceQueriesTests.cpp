@@ -88,3 +88,32 @@ TEST_CASE("FirstSurfaceCrossing on hearts: the bounded march finds the brute-for
 		CHECK(found > 100);
 	}
 }
+
+TEST_CASE("FirstSurfaceCrossing on hearts: a line clipping the tip finds the sliver the plain march steps over")
+{
+	// Near the tip (0, −1) of the α = 1 heart, at height δ above it, the heart is |x| ≤ (2δ)^{3/2}
+	// about: a sliver 6e-3 wide for δ = 0.01 and 9e-4 for δ = 0.003, thinner than the plain
+	// march's step.
+	const auto heart = MakeHeart(1.0);
+	const auto plain = MakeUserShape(UserHeartDef(1.0));
+	for (double angle : {0.0, 0.7, -2.1})
+	{
+		const Pose pose(Vec2(0.3, -0.2), angle);
+		for (double delta : {0.01, 0.003})
+		{
+			const Vec2 X = ToWorld(pose, Vec2(-2.0, -1.0 + delta));
+			const Vec2 dir = Rotate(pose.q, Vec2(1.0, 0.0));
+			const double s = FirstSurfaceCrossing(*heart, pose, X, dir, 4.0);
+			const double ref = BruteFirstCrossing(*heart, pose, X, dir, 4.0);
+			CAPTURE(angle);
+			CAPTURE(delta);
+			REQUIRE(ref > 0.0);
+			CHECK(ref < 2.0); // the sliver, before the heart's axis
+			CHECK(std::fabs(s - ref) <= 1e-10);
+			// The same level without bounds steps over it and misses the heart (the documented
+			// limit of the plain march: crossing pairs thinner than its step).
+			const double plainS = FirstSurfaceCrossing(*plain, pose, X, dir, 4.0);
+			CHECK((plainS < 0.0 || plainS > ref + 1e-3));
+		}
+	}
+}

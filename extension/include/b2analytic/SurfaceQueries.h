@@ -12,9 +12,12 @@ bool TestPoint(const Shape& shape, const Pose& pose, Vec2 point);
 /// First s in [0, sMax] at which the line X + s·dir crosses the particle's own surface, leaving
 /// the particle when X is inside it and entering it when X is outside; −1 when it does not.
 /// Convex shapes: one bracketed root (after a Brent minimisation of the level along the line
-/// when X is outside); other shapes: a march in steps finer than the surface samples, stepping
-/// over stretches that the shape's LevelUpperBound (inside) or LevelLowerBound (outside) clears,
-/// then a bracketed root. `dir` need not be unit (s is in units of |dir|).
+/// when X is outside); other shapes: a march in steps finer than the surface samples, then a
+/// bracketed root. Where the shape bounds its level (LevelUpperBound inside, LevelLowerBound
+/// outside; the heart does), the march steps over stretches the bounds clear and looks down to
+/// 1/64 of its step where they do not, so that it finds crossing pairs that thin (a line clipping
+/// a heart's tip); without bounds a pair thinner than the step can be missed. `dir` need not be
+/// unit (s is in units of |dir|).
 double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax);
 
 /// Result of a ray cast.
