@@ -94,6 +94,35 @@ std::vector<NamedPair> Pairs()
 }
 
 double LevelTol(const Posed& a, LD want) { return 1e-9 * double(std::max(std::fabs(want), LD(a.shape->SurfaceLevel()))); }
+
+// Hearts of α = 1 at the origin and α = 0.7 at a random distance in [near, far], both turned.
+void AddRandomHeartPairs(std::vector<NamedPair>& cases, std::uint64_t seed, int count, double near, double far)
+{
+	Random rng(seed);
+	for (int i = 0; i < count; ++i)
+	{
+		const double angle = rng.Angle(), distance = rng.Uniform(near, far);
+		cases.push_back({"random hearts", Heart(1.0, {0.0, 0.0}, rng.Angle()),
+		                 Heart(0.7, distance * Vec2(std::cos(angle), std::sin(angle)), rng.Angle()), false});
+	}
+}
+
+// SolveGridScale both ways on each pair: the brute-force level, and a point on B's surface.
+void CheckGridAgainstBruteForce(const std::vector<NamedPair>& cases)
+{
+	for (const NamedPair& p : cases)
+		for (const bool swap : {false, true})
+		{
+			const Posed& a = swap ? p.b : p.a;
+			const Posed& b = swap ? p.a : p.b;
+			INFO(std::string(p.name) << (swap ? " (swapped)" : "") << " at " << b.pose.p.x << ", " << b.pose.p.y);
+			const ref::SurfaceMinResult want = BruteForce(a, b);
+			const LevelResult r = SolveGridScale(*a.shape, a.pose, *b.shape, b.pose);
+			REQUIRE(r.Ok());
+			CHECK(std::fabs(LD(r.level) - want.value) <= LevelTol(a, want.value));
+			CHECK(std::fabs(RelativeLevel(*b.shape, b.pose, r.point) - 1.0) <= 2e-10);
+		}
+}
 } // namespace
 
 TEST_CASE("hearts: SolveGridScale (and SolveScaleA) match a 200000-sample brute-force minimum with polishing")
@@ -229,25 +258,8 @@ TEST_CASE("hearts: minima at a cusp of either curve and at random poses match th
 		cases.push_back({"B's tip at a circle", Circle(0.5, b.pose.p + 1.45 * bAxis + 0.05 * Perp(bAxis)), b, false});
 		cases.push_back({"B's tip at a heart", Heart(1.0, b.pose.p + 2.1 * bAxis, turn + 0.4), b, false});
 	}
-	Random rng(2026);
-	for (int i = 0; i < 24; ++i)
-	{
-		const double angle = rng.Angle(), distance = rng.Uniform(0.6, 2.6);
-		cases.push_back({"random hearts", Heart(1.0, {0.0, 0.0}, rng.Angle()),
-		                 Heart(0.7, distance * Vec2(std::cos(angle), std::sin(angle)), rng.Angle()), false});
-	}
-	for (const NamedPair& p : cases)
-		for (const bool swap : {false, true})
-		{
-			const Posed& a = swap ? p.b : p.a;
-			const Posed& b = swap ? p.a : p.b;
-			INFO(std::string(p.name) << (swap ? " (swapped)" : "") << " at " << b.pose.p.x << ", " << b.pose.p.y);
-			const ref::SurfaceMinResult want = BruteForce(a, b);
-			const LevelResult r = SolveGridScale(*a.shape, a.pose, *b.shape, b.pose);
-			REQUIRE(r.Ok());
-			CHECK(std::fabs(LD(r.level) - want.value) <= LevelTol(a, want.value));
-			CHECK(std::fabs(RelativeLevel(*b.shape, b.pose, r.point) - 1.0) <= 2e-10);
-		}
+	AddRandomHeartPairs(cases, 2026, 24, 0.6, 2.6);
+	CheckGridAgainstBruteForce(cases);
 }
 
 TEST_CASE("grid: a contact on a diamond's edge next to its vertex refines past the vertex sample")
@@ -284,4 +296,27 @@ TEST_CASE("grid: a contact on a diamond's edge next to its vertex refines past t
 			CHECK(std::fabs(LD(r.level) - want.value) <= LevelTol(a, want.value));
 			CHECK(Distance(r.point, ToWorld(b.pose, foot)) <= 1e-7);
 		}
+}
+
+TEST_CASE("hearts: a tip valley on the slope of a smooth basin, between samples none of which is a minimum")
+{
+	// Where B's curve crosses A's tip axis on the flank of a smooth basin, A's level dips into
+	// its |x|^{2/3} valley between two samples and the samples descend straight past it into
+	// the basin: no sample marks the valley, whose bottom is lower than the basin's minimum.
+	// (Two such poses came from b2a_bench_pairs --seed 9 and --seed 11; the bisection that
+	// places its poses had stopped near them.) The grid solves every crossing of A's corner rays
+	// between scanned samples whose disc A's bound does not rule out.
+	std::vector<NamedPair> cases = {
+		{"bench seed 9", Heart(1.0, {-0.11466308895789179, 0.098869122347475802}, -1.3995699001383219),
+		 Heart(0.7, {-2.0934198425250901, 0.81450236905284645}, 3.1396374313364257), false},
+		{"bench seed 11", Heart(1.0, {0.0078872851016547063, 0.063703832519970582}, 2.2426867913705473),
+		 Heart(0.7, {-1.8468586420505186, 0.56035004750226358}, 1.6055512431842236), false},
+	};
+	// And random poses of the same pair at the distances where that happens (touching to a
+	// fifth of the size apart), each both ways.
+	AddRandomHeartPairs(cases, 909, 60, 1.6, 2.3);
+	CheckGridAgainstBruteForce(cases);
+	// The two bench poses' contacts: the valley is the minimum of A over B.
+	const LevelResult seed9 = SolveGridScale(*cases[0].a.shape, cases[0].a.pose, *cases[0].b.shape, cases[0].b.pose);
+	CHECK(seed9.level == doctest::Approx(1.410104666635).epsilon(1e-11));
 }

@@ -199,6 +199,8 @@ public:
 
 	/// Polar angles (in [-π, π)) where the surface has corners; quadrature and sampling split there.
 	const std::vector<double>& CornerAngles() const { return m_corners; }
+	/// The corners' rays as unit vectors (cos, sin of CornerAngles, in the same order).
+	const std::vector<Vec2>& CornerDirections() const { return m_cornerDirections; }
 	/// True when the polar angle θ (in [−π, π], as atan2 gives it) lies within tol of a corner.
 	bool NearCorner(double theta, double tol) const
 	{
@@ -240,6 +242,7 @@ private:
 	double m_boundingRadius = 0.0;
 	MassProperties m_mass;
 	std::vector<double> m_corners;
+	std::vector<Vec2> m_cornerDirections;
 
 	std::uint64_t m_serial; // unique per shape: keys the dense sampling pass reused between sample counts
 	mutable std::mutex m_sampleMutex;

@@ -124,9 +124,8 @@ bool IsCorner(const Shape& s, double theta) { return s.NearCorner(theta, 1e-12);
 bool CornerRayCrossing(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double& value, Vec2& point)
 {
 	bool found = false;
-	for (double corner : walk.a.CornerAngles())
+	for (const Vec2 u : walk.a.CornerDirections())
 	{
-		const Vec2 u(std::cos(corner), std::sin(corner));
 		const double cl = Cross(u, pl), ch = Cross(u, ph);
 		if (!(cl * ch <= 0.0) || !(Dot(u, pl) > 0.0 || Dot(u, ph) > 0.0))
 			continue;
@@ -227,6 +226,7 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 struct GridScratch
 {
 	std::vector<double> value, bound;
+	std::vector<Vec2> inA;
 	std::vector<char> scanned; // per run: evaluated whole
 	std::vector<std::pair<double, int>> order;
 	std::vector<int> minima;
@@ -251,9 +251,12 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	const double unset = std::numeric_limits<double>::infinity();
 	value.assign(n, unset);
 	const bool ownLevel = LB == b.SurfaceLevel();
+	std::vector<Vec2>& inA = scratch.inA; // each evaluated sample in A's body frame
+	inA.resize(n);
 	auto evaluate = [&](int k) {
 		const Vec2 p = ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB);
-		value[k] = a.Level(ToWorld(walk.bInA, p));
+		inA[k] = ToWorld(walk.bInA, p);
+		value[k] = a.Level(inA[k]);
 		return !std::isnan(value[k]);
 	};
 	// Samples are scanned a run at a time: run g is samples g·kRunLength … (g+1)·kRunLength, its
@@ -373,6 +376,45 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		{
 			bestValue = v;
 			bestPoint = point;
+		}
+	}
+	if (options.gridRefine && !a.CornerAngles().empty())
+	{
+		// Where B's curve crosses one of A's corner rays, A's level has a V-shaped valley (the
+		// heart's tip): a minimum between two samples that the samples need not show as one,
+		// when the valley lies on the slope of a smooth basin. Each crossing between two
+		// scanned samples is solved for (the skipped runs' bounds cover their valleys), unless
+		// A's lower bound over the disc holding that arc of B's curve (the run discs' rule)
+		// is above the best level already; only runs whose disc reaches a ray are searched.
+		const std::vector<Vec2>& rays = a.CornerDirections();
+		auto reaches = [&](Vec2 c, double r) {
+			for (const Vec2 u : rays)
+				if (std::fabs(Cross(u, c)) <= r && Dot(u, c) >= -r)
+					return true;
+			return false;
+		};
+		for (int g = 0; g < runs; ++g)
+		{
+			if (!scanned[g])
+				continue;
+			if (bounded && !reaches(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]))
+				continue;
+			int first, last;
+			runSamples(g, first, last);
+			for (int i = first; i < last; ++i)
+			{
+				const Vec2 p = inA[i], q = inA[i + 1 == n ? 0 : i + 1];
+				for (const Vec2 u : rays)
+				{
+					if (Cross(u, p) * Cross(u, q) <= 0.0 && (Dot(u, p) > 0.0 || Dot(u, q) > 0.0))
+					{
+						if (!bounded ||
+						    !(a.LevelLowerBound(0.5 * (p + q), 0.5 * Distance(p, q) + 2.0 * samples->maxDeviation) > bestValue))
+							CornerRayCrossing(walk, p, q, bestValue, bestPoint);
+						break; // (CornerRayCrossing tries every corner ray)
+					}
+				}
+			}
 		}
 	}
 	if (!std::isfinite(bestValue))

@@ -80,6 +80,9 @@ void Shape::AddCorner(double theta)
 	theta = std::remainder(theta, 2.0 * kPi);
 	m_corners.push_back(theta >= kPi ? theta - 2.0 * kPi : theta);
 	std::sort(m_corners.begin(), m_corners.end());
+	m_cornerDirections.clear();
+	for (double c : m_corners)
+		m_cornerDirections.emplace_back(std::cos(c), std::sin(c));
 	m_serial = g_nextSerial.fetch_add(1, std::memory_order_relaxed); // the dense pass depends on the corners
 }
 
