@@ -154,9 +154,15 @@ struct Reference
 	bool hasCommon = false, hasOneSided = false;
 };
 
+double PairSize(const Family& f) { return 0.5 * (f.a.shape->BoundingRadius() + f.b.shape->BoundingRadius()); }
+
 // B placed along direction u from A at the centre distance where the automatic contact's
 // separation equals `gap` (bisection on the distance; the separation grows with it). The
 // library only places the poses; every error is measured against the long-double reference.
+// Where the separation jumps across the gap (a non-convex pair whose contact switches from one
+// basin of the level to another: the two levels tie there), bisection would converge onto
+// the jump, a pose whose answer is either basin to rounding; B is then moved on by 1e-3 of the
+// size, where one basin is clearly lower.
 Pose PlaceB(const Family& f, const Pose& pa, double angleB, Vec2 u, double gap)
 {
 	const double far = 1.05 * (f.a.shape->BoundingRadius() + f.b.shape->BoundingRadius()) + std::fabs(gap);
@@ -171,10 +177,10 @@ Pose PlaceB(const Family& f, const Pose& pa, double angleB, Vec2 u, double gap)
 		const double mid = 0.5 * (lo + hi);
 		(sep(mid) < 0.0 ? lo : hi) = mid;
 	}
+	if (sep(hi) - sep(lo) > 1e-6 * far)
+		return Pose(pa.p + (hi + 1e-3 * PairSize(f)) * u, angleB);
 	return Pose(pa.p + 0.5 * (lo + hi) * u, angleB);
 }
-
-double PairSize(const Family& f) { return 0.5 * (f.a.shape->BoundingRadius() + f.b.shape->BoundingRadius()); }
 
 std::vector<PairPose> MakePoses(const Family& f, int perClass, int motions, std::mt19937_64& rng)
 {
