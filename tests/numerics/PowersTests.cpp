@@ -55,6 +55,32 @@ TEST_CASE("powers: CubeRoot hands zero, the ends of the range, infinities and Na
 		CHECK(CubeRoot(x) == std::cbrt(x));
 }
 
+TEST_CASE("powers: CubeRootBounds bracket the exact cube root within 2e-5, over the whole range")
+{
+	Random rng(7);
+	double widest = 0.0;
+	auto check = [&](double x) {
+		double lower = 0.0, upper = 0.0;
+		CubeRootBounds(x, lower, upper);
+		const long double want = cbrtl((long double)x);
+		CAPTURE(x);
+		REQUIRE((long double)lower <= want);
+		REQUIRE((long double)upper >= want);
+		if (want > 0.0L)
+			widest = std::max(widest, double(((long double)upper - (long double)lower) / want));
+	};
+	for (int k = 0; k < 200000; ++k)
+		check(std::exp(rng.Uniform(-708.0, 709.0)));
+	// Exact cubes, where a rounded step could land below the root, and the ends.
+	for (double r : {1.0, 2.0, 3.0, 10.0, 0.5, 1e-90, 7e90})
+		check(r * r * r);
+	for (double x : {0.0, 1e-310, 1e-290, 1e290, 1e300, std::numeric_limits<double>::max(), std::numeric_limits<double>::min()})
+		check(x);
+	CAPTURE(widest);
+	CHECK(widest <= 2e-5);
+	CHECK(widest >= 1e-6); // (two steps, not three: the bounds are meant to be cheap)
+}
+
 TEST_CASE("powers: RootOf is t^(1/e) by square roots for e = 2, 4, 8 and by pow otherwise")
 {
 	// By square roots, each correctly rounded: within 2 ulp. By pow, 1/e is itself rounded, which

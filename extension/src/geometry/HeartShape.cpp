@@ -64,10 +64,14 @@ double HeartShape::LevelLowerBound(Vec2 centre, double radius) const
 	// Over |x − c| ≤ ρ: x² ≥ dx² and y² ≥ dy² with d = (|c| − ρ)₊ per axis. The cusp term
 	// −|x|^{2/3} y ≥ −(|cx| + ρ)^{2/3} (cy + ρ) where the disc reaches y > 0, and where it lies
 	// below the x axis it adds at least dx^{2/3} |cy + ρ|.
+	// (The cube root by its bounds: the upper one where the term is subtracted, the lower one
+	// where it is added.)
 	const double dx = std::max(std::fabs(centre.x) - radius, 0.0), dy = std::max(std::fabs(centre.y) - radius, 0.0);
 	const double top = centre.y + radius;
 	const double reach = top > 0.0 ? std::fabs(centre.x) + radius : dx;
-	return dx * dx + dy * dy - CubeRoot(reach * reach) * top;
+	double lower, upper;
+	CubeRootBounds(reach * reach, lower, upper);
+	return dx * dx + dy * dy - (top > 0.0 ? upper : lower) * top;
 }
 
 double HeartShape::LevelUpperBound(Vec2 centre, double radius) const
@@ -75,15 +79,19 @@ double HeartShape::LevelUpperBound(Vec2 centre, double radius) const
 	// Over |x − c| ≤ ρ: x² + y² ≤ (|c| + ρ)². The cusp term −|x|^{2/3} y is at most
 	// (|cx| + ρ)^{2/3} (ρ − cy) where the disc reaches y < 0, and where it lies above the x axis
 	// at most −dx^{2/3} (cy − ρ) with dx = (|cx| − ρ)₊ (both factors at their smallest).
+	// (The cube root by its bounds, as in LevelLowerBound, sides swapped.)
 	const double r = Length(centre) + radius;
 	const double bottom = centre.y - radius;
+	double lower, upper;
 	if (bottom < 0.0)
 	{
 		const double wide = std::fabs(centre.x) + radius;
-		return r * r - CubeRoot(wide * wide) * bottom;
+		CubeRootBounds(wide * wide, lower, upper);
+		return r * r - upper * bottom;
 	}
 	const double dx = std::max(std::fabs(centre.x) - radius, 0.0);
-	return r * r - CubeRoot(dx * dx) * bottom;
+	CubeRootBounds(dx * dx, lower, upper);
+	return r * r - lower * bottom;
 }
 
 double HeartShape::RadiusAt(Vec2 u, double level) const

@@ -47,4 +47,31 @@ inline double CubeRoot(double x)
 	return std::copysign(y, x);
 }
 
+/// Bounds lower ≤ ∛x ≤ upper for x ≥ 0, within 2e-5 of each other, at half CubeRoot's cost: for
+/// the level bounds of the grid method, which need a side, not the last digit. From CubeRoot's
+/// bit-pattern guess (within 4 %), two Newton steps y ← (2y + x/y²)/3: each lands at or above the
+/// root (the arithmetic mean of y, y and x/y² is at least their geometric mean, ∛x) and squares
+/// the relative error (4e-2 → 1.6e-3 → 2.6e-6). The upper end takes a margin for the steps'
+/// rounding, the lower one divides by 1 + 1e-5. Outside 1e-290 to 1e290, and for x = 0 and
+/// non-finite x, both come from std::cbrt with the margin.
+inline void CubeRootBounds(double x, double& lower, double& upper)
+{
+	if (!(x >= 1e-290 && x <= 1e290))
+	{
+		const double r = std::cbrt(x);
+		lower = r * (1.0 - 1e-15);
+		upper = r * (1.0 + 1e-15);
+		return;
+	}
+	std::uint64_t bits;
+	std::memcpy(&bits, &x, sizeof bits);
+	bits = bits / 3 + 0x2a9f7893782da1ceULL;
+	double y;
+	std::memcpy(&y, &bits, sizeof y);
+	y = (2.0 * y + x / (y * y)) * (1.0 / 3.0);
+	y = (2.0 * y + x / (y * y)) * (1.0 / 3.0);
+	upper = y * (1.0 + 1e-14);
+	lower = y * (1.0 / (1.0 + 1e-5));
+}
+
 } // namespace b2a
