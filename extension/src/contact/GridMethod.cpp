@@ -342,7 +342,19 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	// that one was scanned too.
 	std::vector<int>& minima = scratch.minima;
 	minima.clear();
-	for (int g = 0; g < runs && ok; ++g)
+	auto consider = [&](int k, int before, int after) {
+		if (value[k] <= value[before] && value[k] < value[after])
+			minima.push_back(k);
+	};
+	if (!bounded && ok && n >= 3)
+	{
+		// Every sample evaluated: plain neighbours, the ends wrapped (same minima, same order).
+		consider(0, n - 1, 1);
+		for (int k = 1; k + 1 < n; ++k)
+			consider(k, k - 1, k + 1);
+		consider(n - 1, n - 2, 0);
+	}
+	for (int g = 0; g < runs && ok && bounded; ++g)
 	{
 		if (!scanned[g])
 			continue;
@@ -358,8 +370,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				ok = ok && evaluate(before); // a NaN stops all evaluation; reported below
 			if (!evaluated(after))
 				ok = ok && evaluate(after);
-			if (value[k] <= value[before] && value[k] < value[after])
-				minima.push_back(k);
+			consider(k, before, after);
 		}
 	}
 	if (!ok)
