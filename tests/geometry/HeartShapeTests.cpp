@@ -41,6 +41,13 @@ TEST_CASE("heart: notch and tip are corners at (0, +-sqrt(alpha)); the axes radi
 		REQUIRE(heart->CornerAngles().size() == 2);
 		CHECK(heart->CornerAngles()[0] == -0.5 * kPi);
 		CHECK(heart->CornerAngles()[1] == 0.5 * kPi);
+		// The corners as rays and as points: tip (0, −√α), notch (0, √α).
+		REQUIRE(heart->CornerDirections().size() == 2);
+		REQUIRE(heart->CornerPoints().size() == 2);
+		CHECK(Distance(heart->CornerDirections()[0], Vec2(0, -1)) <= 1e-16);
+		CHECK(Distance(heart->CornerDirections()[1], Vec2(0, 1)) <= 1e-16);
+		CHECK(Distance(heart->CornerPoints()[0], Vec2(0, -r)) <= 1e-10 * r);
+		CHECK(Distance(heart->CornerPoints()[1], Vec2(0, r)) <= 1e-10 * r);
 		// On x = 0 and on y = 0 the level is r², so the level-L set crosses the axes at √L.
 		CHECK(RelativeError(heart->RadiusAt(Vec2(0, 1), alpha), r) < 1e-15);
 		CHECK(RelativeError(heart->RadiusAt(Vec2(0, -1), alpha), r) < 1e-15);

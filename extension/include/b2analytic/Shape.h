@@ -201,6 +201,8 @@ public:
 	const std::vector<double>& CornerAngles() const { return m_corners; }
 	/// The corners' rays as unit vectors (cos, sin of CornerAngles, in the same order).
 	const std::vector<Vec2>& CornerDirections() const { return m_cornerDirections; }
+	/// The corners themselves: where each ray meets the surface (body frame, same order).
+	const std::vector<Vec2>& CornerPoints() const { return m_cornerPoints; }
 	/// True when the polar angle θ (in [−π, π], as atan2 gives it) lies within tol of a corner.
 	bool NearCorner(double theta, double tol) const
 	{
@@ -243,6 +245,7 @@ private:
 	MassProperties m_mass;
 	std::vector<double> m_corners;
 	std::vector<Vec2> m_cornerDirections;
+	std::vector<Vec2> m_cornerPoints;
 
 	std::uint64_t m_serial; // unique per shape: keys the dense sampling pass reused between sample counts
 	mutable std::mutex m_sampleMutex;

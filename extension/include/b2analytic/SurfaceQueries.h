@@ -14,10 +14,10 @@ bool TestPoint(const Shape& shape, const Pose& pose, Vec2 point);
 /// Convex shapes: one bracketed root (after a Brent minimisation of the level along the line
 /// when X is outside); other shapes: a march in steps finer than the surface samples, then a
 /// bracketed root. Where the shape bounds its level (LevelUpperBound inside, LevelLowerBound
-/// outside; the heart does), the march steps over stretches the bounds clear and looks down to
-/// 1/64 of its step where they do not, so that it finds crossing pairs that thin (a line clipping
-/// a heart's tip); without bounds a pair thinner than the step can be missed. `dir` need not be
-/// unit (s is in units of |dir|).
+/// outside; the heart does), the march steps over stretches the bounds clear, and near the
+/// shape's corners looks down to 1/64 of its step where they do not, so that it finds crossing
+/// pairs that thin (a line clipping a heart's tip); without bounds a pair thinner than the step
+/// can be missed. `dir` need not be unit (s is in units of |dir|).
 double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax);
 
 /// Result of a ray cast.

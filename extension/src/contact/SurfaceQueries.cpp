@@ -53,9 +53,10 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 	// bounds its level over a disc, a stretch of the line whose covering disc lies wholly on the
 	// starting side (inside: the upper bound below the surface level; outside: the lower bound
 	// above it) holds no crossing and is stepped over, in lengths doubled while the bound holds
-	// and halved where it fails, down to 1/64 of the plain step, where the level is evaluated:
-	// the march evaluates only near the surface, and finds a crossing pair down to that
-	// thickness (a line clipping a heart's tip) where the plain step would step over it.
+	// and halved where it fails, down to the plain step, where the level is evaluated: the
+	// march evaluates only near the surface. Near the shape's corners it looks down to 1/64 of
+	// the step, and finds a crossing pair that thin (a line clipping a heart's tip) where the
+	// plain step would step over it.
 	const double len = Length(dir);
 	const double h = std::min(sMax / 64.0, 0.5 * shape.Samples()->maxSpacing / std::max(len, 1e-300));
 	const bool inside = f0 < 0.0;
@@ -65,6 +66,17 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 		return inside ? shape.LevelUpperBound(c, rho) < own : shape.LevelLowerBound(c, rho) > own;
 	};
 	const bool bounded = std::isfinite(inside ? shape.LevelUpperBound(ToBody(pose, X), 0.0) : shape.LevelLowerBound(ToBody(pose, X), 0.0));
+	// A crossing pair thinner than the step forms only at a corner (a heart's tip: the
+	// surface there is a cusp); elsewhere the step is fine enough, as for the plain march.
+	const std::vector<Vec2>& corners = shape.CornerPoints();
+	auto nearCorner = [&](double from, double to) {
+		const Vec2 c = ToBody(pose, X + (0.5 * (from + to)) * dir);
+		const double reach = (0.5 * (to - from) + 2.0 * h) * len;
+		for (const Vec2 p : corners)
+			if (LengthSquared(p - c) <= reach * reach)
+				return true;
+		return false;
+	};
 	const double finest = bounded ? h / 64.0 : h;
 	double s0 = 0.0, fa = f0, jumpStart = 0.0;
 	double step = bounded ? 4.0 * h : h;
@@ -103,9 +115,9 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 		const double fb = f(s1);
 		if ((fb <= 0.0) != (fa <= 0.0))
 			return FindRootBrent(f, s0, s1, fa, fb, 0.0, 200).x;
-		if (bounded && step > finest)
+		if (bounded && step > finest && nearCorner(s0, s1))
 		{
-			step *= 0.5; // no crossing at the ends, but the bound cannot rule out a pair between
+			step *= 0.5; // no crossing at the ends, but near a corner the bound cannot rule out a pair
 			continue;
 		}
 		s0 = s1;

@@ -369,6 +369,9 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 void Shape::Finalize(double boundingRadius, const MassProperties* mass)
 {
 	const double L = m_surfaceLevel;
+	m_cornerPoints.clear();
+	for (const Vec2 u : m_cornerDirections)
+		m_cornerPoints.push_back(RadiusAt(u, L) * u);
 	if (boundingRadius > 0.0)
 	{
 		m_boundingRadius = boundingRadius;
