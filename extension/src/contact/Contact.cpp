@@ -91,9 +91,15 @@ ContactResult Failed(const LevelResult& level)
 // vertices of exponent-1 superellipses): there the gradient has no meaningful direction.
 bool AtCorner(const Shape& s, Vec2 x)
 {
+	// Within 1e-7 rad of a corner's ray: on its side of the centre, |u × x| ≤ sin(1e-7)·|x|
+	// (NearCorner's test, without the atan2).
 	if (s.CornerAngles().empty() || !(LengthSquared(x) > 0.0))
 		return false;
-	return s.NearCorner(std::atan2(x.y, x.x), 1e-7);
+	const double off = 1e-7 * Length(x); // sin(1e-7) = 1e-7 to 2e-22
+	for (const Vec2 u : s.CornerDirections())
+		if (Dot(u, x) > 0.0 && std::fabs(Cross(u, x)) < off)
+			return true;
+	return false;
 }
 
 // A convex shape's extreme point along `dir` on the line X + t·dir (the largest root of
