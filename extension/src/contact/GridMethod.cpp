@@ -117,6 +117,13 @@ bool RefineNewton(const SurfaceWalk& walk, double lo, double hi, double mid, Vec
 // True when the polar angle is one of the shape's corners (samples sit on corners exactly).
 bool IsCorner(const Shape& s, double theta) { return s.NearCorner(theta, 1e-12); }
 
+// The segment pl–ph straddles the ray from the origin along u (the line through it, on the
+// ray's side of the origin).
+bool SegmentMeetsRay(Vec2 u, Vec2 pl, Vec2 ph)
+{
+	return Cross(u, pl) * Cross(u, ph) <= 0.0 && (Dot(u, pl) > 0.0 || Dot(u, ph) > 0.0);
+}
+
 // Where B's level-LB curve crosses the ray of one of A's corners (A's body frame) between the
 // neighbours pl and ph of a sample. Along that ray λA is not differentiable: at the heart's tip
 // it runs in a V-shaped valley, λA ≈ smooth + c|s|^{2/3} across it, so the crossing is a local
@@ -127,8 +134,7 @@ bool CornerRayCrossing(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double& value,
 	bool found = false;
 	for (const Vec2 u : walk.a.CornerDirections())
 	{
-		const double cl = Cross(u, pl), ch = Cross(u, ph);
-		if (!(cl * ch <= 0.0) || !(Dot(u, pl) > 0.0 || Dot(u, ph) > 0.0))
+		if (!SegmentMeetsRay(u, pl, ph))
 			continue;
 		const double margin = Distance(pl, ph);
 		const double s0 = std::max(0.0, std::min(Dot(u, pl), Dot(u, ph)) - margin);
@@ -435,7 +441,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				const Vec2 p = inA[i], q = inA[i + 1 == n ? 0 : i + 1];
 				for (const Vec2 u : rays)
 				{
-					if (Cross(u, p) * Cross(u, q) <= 0.0 && (Dot(u, p) > 0.0 || Dot(u, q) > 0.0))
+					if (SegmentMeetsRay(u, p, q))
 					{
 						if (!bounded ||
 						    !(a.LevelLowerBound(0.5 * (p + q), 0.5 * Distance(p, q) + 2.0 * samples->maxDeviation) > bestValue))

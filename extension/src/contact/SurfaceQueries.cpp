@@ -60,8 +60,9 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 	const double len = Length(dir);
 	const double h = std::min(sMax / 64.0, 0.5 * shape.Samples()->maxSpacing / std::max(len, 1e-300));
 	const bool inside = f0 < 0.0;
+	auto middle = [&](double from, double to) { return ToBody(pose, X + (0.5 * (from + to)) * dir); };
 	auto clear = [&](double from, double to) {
-		const Vec2 c = ToBody(pose, X + (0.5 * (from + to)) * dir);
+		const Vec2 c = middle(from, to);
 		const double rho = 0.5 * (to - from) * len;
 		return inside ? shape.LevelUpperBound(c, rho) < own : shape.LevelLowerBound(c, rho) > own;
 	};
@@ -70,7 +71,7 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 	// surface there is a cusp); elsewhere the step is fine enough, as for the plain march.
 	const std::vector<Vec2>& corners = shape.CornerPoints();
 	auto nearCorner = [&](double from, double to) {
-		const Vec2 c = ToBody(pose, X + (0.5 * (from + to)) * dir);
+		const Vec2 c = middle(from, to);
 		const double reach = (0.5 * (to - from) + 2.0 * h) * len;
 		for (const Vec2 p : corners)
 			if (LengthSquared(p - c) <= reach * reach)

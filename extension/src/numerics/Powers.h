@@ -21,23 +21,31 @@ inline double RootOf(double t, double e)
 	return std::pow(t, 1.0 / e);
 }
 
+/// A first guess of ∛x for x > 0 from the exponent bits: the bit pattern of x^{1/3} is about a
+/// third of x's plus a constant, within 4 % (CubeRoot and CubeRootBounds refine it).
+inline double CubeRootGuess(double x)
+{
+	std::uint64_t bits;
+	std::memcpy(&bits, &x, sizeof bits);
+	bits = bits / 3 + 0x2a9f7893782da1ceULL;
+	double y;
+	std::memcpy(&y, &bits, sizeof y);
+	return y;
+}
+
 /// The real cube root, within 2 ulp of std::cbrt and about 2.5 times faster (glibc's goes
 /// through frexp and ldexp, and was 40 % of a heart–heart contact, whose level has |x|^{2/3}).
-/// A first guess from the exponent bits (the bit pattern of x^{1/3} is about a third of x's
-/// plus a constant: within 4 %), two Halley steps y ← y·(y³ + 2x)/(2y³ + x), each cubing the
+/// From CubeRootGuess (within 4 %), two Halley steps y ← y·(y³ + 2x)/(2y³ + x), each cubing the
 /// relative error (4e-2 → 2e-5 → 3e-15), and a Newton step to rounding, written
-/// y ← y + (x/y² − y)/3 (its correction loses less to rounding than (y³ − x)/(3y²)). Outside 1e-290 to 1e290 (where y³ and 2y³ could leave the range), zero, infinities
-/// and NaN go to std::cbrt.
+/// y ← y + (x/y² − y)/3 (its correction loses less to rounding than (y³ − x)/(3y²)). Outside
+/// 1e-290 to 1e290 (where y³ and 2y³ could leave the range), zero, infinities and NaN go to
+/// std::cbrt.
 inline double CubeRoot(double x)
 {
 	const double ax = std::fabs(x);
 	if (!(ax >= 1e-290 && ax <= 1e290))
 		return std::cbrt(x);
-	std::uint64_t bits;
-	std::memcpy(&bits, &ax, sizeof bits);
-	bits = bits / 3 + 0x2a9f7893782da1ceULL;
-	double y;
-	std::memcpy(&y, &bits, sizeof y);
+	double y = CubeRootGuess(ax);
 	for (int k = 0; k < 2; ++k)
 	{
 		const double y3 = y * y * y;
@@ -48,8 +56,8 @@ inline double CubeRoot(double x)
 }
 
 /// Bounds lower ≤ ∛x ≤ upper for x ≥ 0, within 2e-5 of each other, at half CubeRoot's cost: for
-/// the level bounds of the grid method, which need a side, not the last digit. From CubeRoot's
-/// bit-pattern guess (within 4 %), two Newton steps y ← (2y + x/y²)/3: each lands at or above the
+/// the level bounds of the grid method, which need a side, not the last digit. From
+/// CubeRootGuess (within 4 %), two Newton steps y ← (2y + x/y²)/3: each lands at or above the
 /// root (the arithmetic mean of y, y and x/y² is at least their geometric mean, ∛x) and squares
 /// the relative error (4e-2 → 1.6e-3 → 2.6e-6). The upper end takes a margin for the steps'
 /// rounding, the lower one divides by 1 + 1e-5. Outside 1e-290 to 1e290, and for x = 0 and
@@ -63,11 +71,7 @@ inline void CubeRootBounds(double x, double& lower, double& upper)
 		upper = r * (1.0 + 1e-15);
 		return;
 	}
-	std::uint64_t bits;
-	std::memcpy(&bits, &x, sizeof bits);
-	bits = bits / 3 + 0x2a9f7893782da1ceULL;
-	double y;
-	std::memcpy(&y, &bits, sizeof y);
+	double y = CubeRootGuess(x);
 	y = (2.0 * y + x / (y * y)) * (1.0 / 3.0);
 	y = (2.0 * y + x / (y * y)) * (1.0 / 3.0);
 	upper = y * (1.0 + 1e-14);
