@@ -28,6 +28,9 @@ namespace
 std::vector<Vec2> ConvexHull(std::vector<Vec2> p)
 {
 	std::sort(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+	p.erase(std::unique(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }), p.end());
+	if (p.size() < 3)
+		return p; // a point or a segment (the chain below would drop a lone point)
 	std::vector<Vec2> h(2 * p.size());
 	size_t k = 0;
 	for (size_t i = 0; i < p.size(); ++i)
@@ -80,7 +83,8 @@ std::vector<int> VerticesOutside(const Shape& shape, const std::vector<Vec2>& po
 		for (int i = 0; i < n; ++i)
 		{
 			const Vec2 a = poly[i], e = poly[(i + 1) % n] - a;
-			const double t = std::clamp(Dot(p - a, e) / Dot(e, e), 0.0, 1.0);
+			const double ee = Dot(e, e); // 0 for a repeated vertex: its nearest point is the vertex
+			const double t = ee > 0.0 ? std::clamp(Dot(p - a, e) / ee, 0.0, 1.0) : 0.0;
 			const double d = Length(p - (a + t * e));
 			if (d < nearest)
 			{
@@ -154,6 +158,22 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 	if (!(reach < most && moment < most))
 		throw InvalidParameter("CreateAnalyticFixture", "shape", "is too large for Box2D's float mass data, bounding radius",
 		                       shape.BoundingRadius());
+	// Nor underflow: b2Body::ResetMassData moves the float moment about the body origin to the
+	// centroid (I − m·|c|²) and asserts that it stays positive. A needle 1e-40 wide has a mass
+	// below float's normal range, and that difference is then rounding noise (found by the
+	// world fuzzer). Done here in float as Box2D does it, for a body with this fixture alone.
+	if (def.density > 0.0f)
+	{
+		const Vec2 c = ToWorld(local, shape.Mass().centroid);
+		const float mass = float(double(def.density) * shape.Mass().area);
+		const float originMoment = float(double(def.density) * (shape.Mass().polarMoment + shape.Mass().area * LengthSquared(c)));
+		const float centroidMoment = originMoment - mass * (float(c.x) * float(c.x) + float(c.y) * float(c.y));
+		if (!(mass >= std::numeric_limits<float>::min() && centroidMoment > 0.0f))
+			throw InvalidParameter("CreateAnalyticFixture", "shape",
+			                       "is too thin for Box2D's float mass data (mass and moment below float's normal range "
+			                       "or lost to rounding), area",
+			                       shape.Mass().area);
+	}
 
 	// The proxy: Box2D's time of impact stops bodies when proxy cores come within
 	// totalRadius − 3·slop and expects its position solver to leave them at totalRadius − slop,
@@ -183,6 +203,16 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 	}
 	if (!shape.IsConvex())
 		points = ConvexHull(points);
+	// Repeated points (samples that coincide on a degenerate user shape) would give edges
+	// without a normal; fewer than three left means the samples span no area.
+	points.erase(std::unique(points.begin(), points.end(), [](Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }),
+	             points.end());
+	while (points.size() > 1 && points.back().x == points.front().x && points.back().y == points.front().y)
+		points.pop_back();
+	if (points.size() < 3)
+		throw InvalidParameter("CreateAnalyticFixture", "shape",
+		                       "has surface samples that span no area (the proxy polygon needs 3 distinct vertices), vertices",
+		                       double(points.size()));
 	// The rounded proxy must lie inside the true shape: Box2D drops a time of impact whose
 	// contact is not touching when it gets there (b2World::SolveTOI), so a proxy reaching past
 	// the true shape lets fast particles pass. Convex shapes fit as built; a hull bridges concave
