@@ -179,6 +179,31 @@ TEST_CASE("stress: Newton's hardest tangent and far pairs (size ratios 1e5) matc
 	}
 }
 
+TEST_CASE("stress: the min-max answer of a needle far from a giant is polished to the dense reference")
+{
+	// The largest point error of the automatic common level in a million-pair run: a 0.0023 ×
+	// 2.3e-6 superellipse (n = 2, m = 17) 1.4e6 of its size from a 0.71 × 359 one (n = 17.3,
+	// m = 4.1), at C = 1.45e12. Newton's own start fails; min–max's bracket closes on a flat inner
+	// minimum 1400 length units (6e5 sizes) from the point. Newton from there converges to the
+	// point, but was rejected for leaving that answer by more than 1e-3 of the size; it is taken
+	// now because its level is below the bound max(λA, λB) at the min–max point.
+	const double aa = 0x1.2ebab2f895c5cp-9, ab = 0x1.35feaafa7480cp-19, an = 0x1p+1, am = 0x1.1p+4;
+	const double ba = 0x1.6b8ccdd5bb4fep-1, bb = 0x1.66b95160aa903p+8, bn = 0x1.15304748e01a5p+4, bm = 0x1.05f59672121d8p+2;
+	const auto a = MakeSuperellipse(aa, ab, an, am), b = MakeSuperellipse(ba, bb, bn, bm);
+	const Pose pa(Vec2(0x1.ec238aa9c51b4p-9, -0x1.9cc3cd111bb93p-10), -0x1.9bb03f65433ap-4);
+	const Pose pb(Vec2(-0x1.e1652b329d7cp+10, 0x1.45fb02aa854e2p+11), 0x1.6559d403602f6p+1);
+	const ref::CommonLevelResult r = ref::CommonLevelRef(ref::RefShape::Super(aa, ab, an, am), ref::Of(pa),
+	                                                     ref::RefShape::Super(ba, bb, bn, bm), ref::Of(pb));
+	// (The stress run's reference: C = 1.4542002e12 at (−2771.14, 279.47).)
+	CHECK(double(r.level) == doctest::Approx(1.4542002e12).epsilon(1e-7));
+	const LevelResult l = SolveCommonLevel(*a, pa, *b, pb);
+	REQUIRE(l.Ok());
+	CHECK(l.status == SolveStatus::convergedAfterFallback);
+	CHECK(double(std::fabs(l.level - r.level) / r.level) < 1e-12);
+	// Newton's answer to the rounding of its coordinates (2800 from the origin): 1e-11 there.
+	CHECK(double(ref::Dist(l.point, r.point)) < 1e-13 * double(ref::Len(r.point)));
+}
+
 TEST_CASE("stress: the dense references of the known failures agree with the built answers")
 {
 	for (const Pair& p : SmallHeartPairs())
