@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 
 using namespace b2a;
 using namespace b2a::test;
@@ -94,4 +95,48 @@ TEST_CASE("fuzz regression: a particle too thin for float or for its samples is 
 	for (int i = 0; i < 180; ++i)
 		world.Step(1.0f / 60.0f, 8, 3);
 	CHECK(std::fabs(body->GetPosition().y - 0.25f) <= 2.0f * b2_linearSlop);
+}
+
+TEST_CASE("a small particle far from its body's centre is refused by 'local' only where Box2D's float moment is lost")
+{
+	// CreateFixture's b2Body::ResetMassData computes I − m·|c|² in float and asserts it positive.
+	// A 0.1 circle 300 from the origin of an otherwise empty body has no moment left after that
+	// (Box2D would assert): refused, by 'local'. The same circle on a body whose centre stays near
+	// the origin (a 2 × 2 box there, then a second circle opposite) keeps its moment, and the body
+	// gets the closed-form mass data.
+	b2World world(b2Vec2(0.0f, 0.0f));
+	b2BodyDef bodyDef;
+	bodyDef.type = b2_dynamicBody;
+	auto circleAt = [](double x) {
+		AnalyticFixtureDef analytic;
+		analytic.shape = MakeCircle(0.1);
+		analytic.local = Pose(Vec2(x, 0.0), 0.0);
+		return analytic;
+	};
+	b2FixtureDef def;
+	def.density = 1.0f;
+
+	b2Body* lone = world.CreateBody(&bodyDef);
+	std::string message;
+	try
+	{
+		CreateAnalyticFixture(lone, def, circleAt(300.0));
+	}
+	catch (const InvalidParameter& e)
+	{
+		message = e.what();
+	}
+	CHECK(message.find("'local'") != std::string::npos);
+	CHECK(lone->GetFixtureList() == nullptr);
+
+	b2Body* dumbbell = world.CreateBody(&bodyDef);
+	b2PolygonShape box;
+	box.SetAsBox(1.0f, 1.0f);
+	dumbbell->CreateFixture(&box, 1.0f);
+	CreateAnalyticFixture(dumbbell, def, circleAt(300.0));
+	CreateAnalyticFixture(dumbbell, def, circleAt(-300.0));
+	const double area = kPi * 0.01; // each circle's; the box: mass 4, moment 8/3
+	CHECK(double(dumbbell->GetMass()) == doctest::Approx(4.0 + 2.0 * area).epsilon(1e-6));
+	CHECK(std::fabs(dumbbell->GetLocalCenter().x) < 1e-3f);
+	CHECK(double(dumbbell->GetInertia()) == doctest::Approx(8.0 / 3.0 + 2.0 * area * (300.0 * 300.0 + 0.005)).epsilon(1e-5));
 }

@@ -158,21 +158,51 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 	if (!(reach < most && moment < most))
 		throw InvalidParameter("CreateAnalyticFixture", "shape", "is too large for Box2D's float mass data, bounding radius",
 		                       shape.BoundingRadius());
-	// Nor underflow: b2Body::ResetMassData moves the float moment about the body origin to the
-	// centroid (I − m·|c|²) and asserts that it stays positive. A needle 1e-40 wide has a mass
-	// below float's normal range, and that difference is then rounding noise (found by the
-	// world fuzzer). Done here in float as Box2D does it, for a body with this fixture alone.
+	// Nor underflow: a mass below float's normal range keeps few bits (an ellipse 6.6e-40 wide,
+	// found by the world fuzzer), and its inverse overflows.
 	if (def.density > 0.0f)
 	{
-		const Vec2 c = ToWorld(local, shape.Mass().centroid);
 		const float mass = float(double(def.density) * shape.Mass().area);
-		const float originMoment = float(double(def.density) * (shape.Mass().polarMoment + shape.Mass().area * LengthSquared(c)));
-		const float centroidMoment = originMoment - mass * (float(c.x) * float(c.x) + float(c.y) * float(c.y));
-		if (!(mass >= std::numeric_limits<float>::min() && centroidMoment > 0.0f))
+		const float moment = float(double(def.density) * shape.Mass().polarMoment);
+		if (!(mass >= std::numeric_limits<float>::min() && moment >= std::numeric_limits<float>::min()))
 			throw InvalidParameter("CreateAnalyticFixture", "shape",
-			                       "is too thin for Box2D's float mass data (mass and moment below float's normal range "
-			                       "or lost to rounding), area",
-			                       shape.Mass().area);
+			                       "is too thin (or 'density' too low) for Box2D's float mass data: its mass or moment "
+			                       "is below float's normal range, mass",
+			                       double(def.density) * shape.Mass().area);
+	}
+	// b2Body::ResetMassData, which CreateFixture calls, moves the body's float moment about its
+	// origin to its centre (I − m·|c|²) and asserts that it stays positive. Far from the body's
+	// centre a small particle's own moment is lost in that difference (as a Box2D circle's is), so
+	// the sums are done here first, in float as Box2D does them, with this fixture added.
+	if (body->GetType() == b2_dynamicBody && !body->IsFixedRotation() && def.density > 0.0f)
+	{
+		float mass = 0.0f, moment = 0.0f;
+		b2Vec2 centre(0.0f, 0.0f);
+		auto add = [&](const b2MassData& m) {
+			mass += m.mass;
+			centre += m.mass * m.center;
+			moment += m.I;
+		};
+		for (const b2Fixture* f = body->GetFixtureList(); f; f = f->GetNext())
+		{
+			if (f->GetDensity() == 0.0f)
+				continue;
+			b2MassData m;
+			f->GetMassData(&m);
+			add(m);
+		}
+		const Vec2 c = ToWorld(local, shape.Mass().centroid);
+		b2MassData own;
+		own.mass = float(double(def.density) * shape.Mass().area);
+		own.center = F(c);
+		own.I = float(double(def.density) * (shape.Mass().polarMoment + shape.Mass().area * LengthSquared(c)));
+		add(own);
+		centre *= 1.0f / mass;
+		if (!(moment - mass * b2Dot(centre, centre) > 0.0f))
+			throw InvalidParameter("CreateAnalyticFixture", "local",
+			                       "puts the particle so far from the body's centre that Box2D's float moment of inertia "
+			                       "about it is lost to rounding (move the body origin nearer), distance",
+			                       Length(c));
 	}
 
 	// The proxy: Box2D's time of impact stops bodies when proxy cores come within
