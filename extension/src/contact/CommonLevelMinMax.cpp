@@ -119,26 +119,26 @@ LevelResult SolveCommonLevelMinMax(const Shape& a, const Pose& pa, const Shape& 
 	g(root.x); // leave xi at the minimiser of the final ν
 	result.iterations = root.iterations;
 
-	const GaugeValue A = f.Eval(f.a, xi, false);
-	if (!A.finite)
-	{
-		result.failure = "min-max: non-finite level at the answer";
-		return result;
-	}
 	// Polish with Newton from the min–max answer: it is inside Newton's basin now. Newton's answer
 	// is taken where it stayed within 1e-3 of the pair's size, or where its level is at most
-	// max(λA, λB) at the min–max point. Any point's larger level bounds the common level from
-	// above, and Newton's converged point (equal levels, opposed gradients) is the common level's
-	// point itself, unique for convex shapes. Where Brent's bracket closed on a flat inner
-	// minimum (a needle 1e6 of its size from a giant: the point 6e5 sizes off, in b2a_stress), the
-	// bound holds and the distance does not.
+	// max(λA, λB) at the min–max point (with 1e-3 for the rounding of levels like 1e12). Any
+	// point's larger level bounds the common level from above, and Newton's converged point
+	// (equal levels, opposed gradients) is the common level's point itself, unique for convex
+	// shapes. Where Brent's bracket closed on a flat inner minimum (a needle 1e6 of its size from
+	// a giant: the point 6e5 sizes off, in b2a_stress), the bound holds and the distance does not.
+	const GaugeValue A = f.Eval(f.a, xi, false);
 	LevelResult polished = RunNewton(f, xi, root.x, options);
-	const double bound = std::max(A.lambda, f.Eval(f.b, xi, false).lambda);
+	const double bound = A.finite ? std::max(A.lambda, f.Eval(f.b, xi, false).lambda) : std::nan(""); // NaN: no bound
 	if (polished.Ok() && (Length(f.Xi(polished.point) - xi) < 1e-3 || polished.level <= bound * (1.0 + 1e-3)))
 	{
 		polished.method = SolveMethod::minMax;
 		polished.iterations += result.iterations;
 		return polished;
+	}
+	if (!A.finite)
+	{
+		result.failure = "min-max: non-finite level at the answer";
+		return result;
 	}
 	result.status = SolveStatus::converged;
 	result.level = A.lambda;
