@@ -24,11 +24,14 @@ namespace b2a
 
 namespace
 {
+// Exactly the same point (for std::unique: repeated proxy points).
+bool SamePoint(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
+
 // Convex hull (Andrew's monotone chain), counter-clockwise, of up to a few points.
 std::vector<Vec2> ConvexHull(std::vector<Vec2> p)
 {
 	std::sort(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-	p.erase(std::unique(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }), p.end());
+	p.erase(std::unique(p.begin(), p.end(), SamePoint), p.end());
 	if (p.size() < 3)
 		return p; // a point or a segment (the chain below would drop a lone point)
 	std::vector<Vec2> h(2 * p.size());
@@ -160,11 +163,11 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 		                       shape.BoundingRadius());
 	// Nor underflow: a mass below float's normal range keeps few bits (an ellipse 6.6e-40 wide,
 	// found by the world fuzzer), and its inverse overflows.
+	const b2MassData own = AnalyticMassData(shape, local, def.density);
 	if (def.density > 0.0f)
 	{
-		const float mass = float(double(def.density) * shape.Mass().area);
-		const float moment = float(double(def.density) * shape.Mass().polarMoment);
-		if (!(mass >= std::numeric_limits<float>::min() && moment >= std::numeric_limits<float>::min()))
+		const float moment = float(double(def.density) * shape.Mass().polarMoment); // about the centroid
+		if (!(own.mass >= std::numeric_limits<float>::min() && moment >= std::numeric_limits<float>::min()))
 			throw InvalidParameter("CreateAnalyticFixture", "shape",
 			                       "is too thin (or 'density' too low) for Box2D's float mass data: its mass or moment "
 			                       "is below float's normal range, mass",
@@ -191,18 +194,13 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 			f->GetMassData(&m);
 			add(m);
 		}
-		const Vec2 c = ToWorld(local, shape.Mass().centroid);
-		b2MassData own;
-		own.mass = float(double(def.density) * shape.Mass().area);
-		own.center = F(c);
-		own.I = float(double(def.density) * (shape.Mass().polarMoment + shape.Mass().area * LengthSquared(c)));
 		add(own);
 		centre *= 1.0f / mass;
 		if (!(moment - mass * b2Dot(centre, centre) > 0.0f))
 			throw InvalidParameter("CreateAnalyticFixture", "local",
 			                       "puts the particle so far from the body's centre that Box2D's float moment of inertia "
 			                       "about it is lost to rounding (move the body origin nearer), distance",
-			                       Length(c));
+			                       Length(ToWorld(local, shape.Mass().centroid)));
 	}
 
 	// The proxy: Box2D's time of impact stops bodies when proxy cores come within
@@ -235,9 +233,8 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 		points = ConvexHull(points);
 	// Repeated points (samples that coincide on a degenerate user shape) would give edges
 	// without a normal; fewer than three left means the samples span no area.
-	points.erase(std::unique(points.begin(), points.end(), [](Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }),
-	             points.end());
-	while (points.size() > 1 && points.back().x == points.front().x && points.back().y == points.front().y)
+	points.erase(std::unique(points.begin(), points.end(), SamePoint), points.end());
+	while (points.size() > 1 && SamePoint(points.back(), points.front()))
 		points.pop_back();
 	if (points.size() < 3)
 		throw InvalidParameter("CreateAnalyticFixture", "shape",

@@ -104,15 +104,22 @@ void AnalyticProxyShape::ComputeAABB(b2AABB* aabb, const b2Transform& transform,
 	aabb->upperBound.Set(Up(box.upper.x), Up(box.upper.y));
 }
 
-void AnalyticProxyShape::ComputeMass(b2MassData* massData, float density) const
+b2MassData AnalyticMassData(const Shape& shape, const Pose& local, float density)
 {
 	// Mass properties about the body origin: the centroid moves with the local pose; the polar
 	// moment about the centroid is invariant under the local rotation (parallel-axis theorem).
-	const MassProperties& mp = Data().shape->Mass();
-	const Vec2 centre = ToWorld(Data().local, mp.centroid);
-	massData->mass = float(density * mp.area);
-	massData->center.Set(float(centre.x), float(centre.y));
-	massData->I = float(density * (mp.polarMoment + mp.area * LengthSquared(centre)));
+	const MassProperties& mp = shape.Mass();
+	const Vec2 centre = ToWorld(local, mp.centroid);
+	b2MassData m;
+	m.mass = float(density * mp.area);
+	m.center.Set(float(centre.x), float(centre.y));
+	m.I = float(density * (mp.polarMoment + mp.area * LengthSquared(centre)));
+	return m;
+}
+
+void AnalyticProxyShape::ComputeMass(b2MassData* massData, float density) const
+{
+	*massData = AnalyticMassData(*Data().shape, Data().local, density);
 }
 
 } // namespace b2a

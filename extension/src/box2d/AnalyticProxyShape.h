@@ -66,6 +66,10 @@ private:
 static_assert(sizeof(AnalyticProxyShape) == sizeof(b2PolygonShape), "Box2D frees shapes with the base class size");
 static_assert(sizeof(void*) <= sizeof(b2Vec2), "the data pointer must fit in one b2Vec2 slot");
 
+/// Box2D's mass data of `shape` placed at `local` in its body's frame with `density`: what the
+/// proxy's ComputeMass gives (CreateAnalyticFixture checks it before Box2D sees it).
+b2MassData AnalyticMassData(const Shape& shape, const Pose& local, float density);
+
 /// Pose of a Box2D transform, in double precision.
 inline Pose ToPose(const b2Transform& xf)
 {
