@@ -345,7 +345,7 @@ void CheckFarCrossing(const SuperellipseShape& s, Level&& level, Vec2 x, Vec2 d,
 }
 } // namespace
 
-TEST_CASE("superellipse: the ellipse's far crossing of a line is the larger root, against long double bisection")
+TEST_CASE("superellipse: the ellipse's far crossing of a line is the larger root, against long double bisection; LineMisses is exact")
 {
 	// Reference: the line's crossings of λ = 1 found by bisection of λ(x + t·d) − 1 in long
 	// double between the line's point nearest the centre (inside when the line hits) and far
@@ -373,9 +373,13 @@ TEST_CASE("superellipse: the ellipse's far crossing of a line is the larger root
 			// The line's point nearest the centre in the scaled frame: the quadratic's vertex.
 			const long double D = d.x / a, E = d.y / b, X = x.x / a, Y = x.y / b;
 			const long double tv = -(X * D + Y * E) / (D * D + E * E);
-			const bool meets = level(x.x + tv * d.x, x.y + tv * d.y) < 1.0L;
+			const long double lowest = level(x.x + tv * d.x, x.y + tv * d.y);
+			const bool meets = lowest < 1.0L;
 			double t = 0.0;
 			const bool found = s->FarCrossing(x, d, t);
+			// LineMisses: exactly the misses, but for lines grazing the surface to 1e-9.
+			if (std::fabs(lowest - 1.0L) > 1e-9L)
+				CHECK(s->LineMisses(x, d) == !meets);
 			if (!meets)
 			{
 				++misses;
@@ -393,9 +397,10 @@ TEST_CASE("superellipse: the ellipse's far crossing of a line is the larger root
 	// A heart has none: the contact code searches instead.
 	double t = 0.0;
 	CHECK_FALSE(MakeHeart(1.0)->FarCrossing(Vec2(0.1, 0.0), Vec2(1.0, 0.0), t));
+	CHECK_FALSE(MakeHeart(1.0)->LineMisses(Vec2(0.0, 5.0), Vec2(1.0, 0.0))); // nor a miss test
 }
 
-TEST_CASE("superellipse: the far crossing of other exponents (Newton) against long double bisection")
+TEST_CASE("superellipse: the far crossing of other exponents (Newton) against long double bisection; LineMisses is the box test")
 {
 	// Reference as for the ellipse: bisection of f(x + t·d) − 1 in long double, f = |x/a|^n +
 	// |y/b|^m, between the line's lowest-level point (found by golden sections of the convex f)
@@ -414,7 +419,7 @@ TEST_CASE("superellipse: the far crossing of other exponents (Newton) against lo
 		REQUIRE(se != nullptr);
 		const long double a = se->A(), b = se->B(), n = se->N(), m = se->M();
 		auto level = [&](long double x, long double y) { return std::pow(std::fabs(x / a), n) + std::pow(std::fabs(y / b), m); };
-		int hits = 0, misses = 0, normals = 0;
+		int hits = 0, misses = 0, normals = 0, boxMisses = 0;
 		for (int i = 0; i < 600; ++i)
 		{
 			Vec2 x, d;
@@ -447,6 +452,25 @@ TEST_CASE("superellipse: the far crossing of other exponents (Newton) against lo
 			const long double lowest = along(tv);
 			double t = 0.0;
 			const bool found = s->FarCrossing(x, d, t);
+			// LineMisses claims a miss where the line misses the box |x| ≤ a, |y| ≤ b, which holds
+			// the particle: the lowest of max(|x/a|, |y/b|) along the line (convex, by golden
+			// sections in long double) above 1; lines grazing the box to 1e-9 may go either way.
+			auto boxLevel = [&](long double t) { return std::max(std::fabs((x.x + t * d.x) / a), std::fabs((x.y + t * d.y) / b)); };
+			long double blo = -reach - 1.0L, bhi = reach + 1.0L;
+			for (int k = 0; k < 300; ++k)
+			{
+				const long double m1 = blo + (bhi - blo) * 0.381966L, m2 = bhi - (bhi - blo) * 0.381966L;
+				(boxLevel(m1) < boxLevel(m2) ? bhi : blo) = (boxLevel(m1) < boxLevel(m2) ? m2 : m1);
+			}
+			const long double boxLowest = boxLevel(0.5L * (blo + bhi));
+			const bool claimsMiss = s->LineMisses(x, d);
+			if (std::fabs(boxLowest - 1.0L) > 1e-9L)
+				CHECK(claimsMiss == (boxLowest > 1.0L));
+			if (claimsMiss)
+			{
+				++boxMisses;
+				CHECK(lowest > 1.0L); // never a line that meets the particle
+			}
 			if (lowest > 1.0L + 1e-9L)
 			{
 				++misses;
@@ -461,6 +485,7 @@ TEST_CASE("superellipse: the far crossing of other exponents (Newton) against lo
 		}
 		CHECK(hits > 200);
 		CHECK(misses > 10);
+		CHECK(boxMisses > 10);
 		CHECK(normals == 200);
 	}
 }

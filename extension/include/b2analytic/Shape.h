@@ -150,6 +150,16 @@ public:
 		return false;
 	}
 
+	/// True only where the shape proves, in closed form, that the body line x + t·d misses the
+	/// particle (clear of rounding: a grazing line is not a miss). False where it meets it or the
+	/// shape cannot tell. The contact code then takes the radial point without searching the line.
+	virtual bool LineMisses(Vec2 x, Vec2 d) const
+	{
+		(void)x;
+		(void)d;
+		return false;
+	}
+
 	/// Support point in the body frame: the point of the particle farthest along d
 	/// (for a non-convex shape, the support point of its convex hull). d need not be unit.
 	virtual Vec2 Support(Vec2 d) const;

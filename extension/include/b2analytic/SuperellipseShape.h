@@ -57,6 +57,9 @@ public:
 	/// larger root of a quadratic, for other exponents Newton on a convex function of t, from
 	/// where it descends monotonically (false when the line misses or only grazes the particle).
 	bool FarCrossing(Vec2 x, Vec2 d, double& t) const override;
+	/// For an ellipse, the quadratic of FarCrossing without real roots (its discriminant below
+	/// rounding); for other exponents, a line that misses the bounding box |x| ≤ a, |y| ≤ b.
+	bool LineMisses(Vec2 x, Vec2 d) const override;
 
 	/// Semi-axis along body x.
 	double A() const { return m_a; }

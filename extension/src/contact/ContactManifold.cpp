@@ -169,6 +169,8 @@ bool LowestAlong(const ManifoldSide& b, Vec2 p, Vec2 n, Vec2& out)
 			out = p - t * n;
 			return true;
 		}
+		if (b.shape->IsConvex() && b.shape->LineMisses(ToBody(b.pose, p), InvRotate(b.pose.q, n)))
+			return false; // what the search below finds, in closed form
 		// Else start beyond B's support plane along −n (outside B) and enter along +n.
 		const double low = -Dot(WorldSupport(*b.shape, b.pose, -n), n);
 		const double margin = 1e-3 * b.shape->BoundingRadius() + 1e-12;

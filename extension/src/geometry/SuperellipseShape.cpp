@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace b2a
 {
@@ -202,6 +203,37 @@ bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
 	const double root = std::sqrt(disc);
 	t = B > 0.0 ? -C / (B + root) : (root - B) / A;
 	return std::isfinite(t);
+}
+
+bool SuperellipseShape::LineMisses(Vec2 x, Vec2 d) const
+{
+	const double X = x.x * m_terms.invA, Y = x.y * m_terms.invB, D = d.x * m_terms.invA, E = d.y * m_terms.invB;
+	if (!std::isfinite(X + Y + D + E))
+		return false;
+	if (m_n == 2.0 && m_m == 2.0)
+	{
+		// FarCrossing's quadratic A t² + 2 B t + C: no real root where B² − A C < 0. Its rounding
+		// is a few eps of B² + |A C|; a discriminant within 1e-12 of that is a grazing line.
+		const double A = D * D + E * E, B = X * D + Y * E, C = (X * X + Y * Y) - 1.0;
+		const double disc = B * B - A * C;
+		return A > 0.0 && std::isfinite(disc) && disc < -1e-12 * (B * B + std::fabs(A * C));
+	}
+	// Other exponents: the particle lies in its box |X|, |Y| ≤ 1 (|X|^n ≤ 1 on it), so a line
+	// missing the box misses the particle. The line is in the slab |X + tD| ≤ 1 for t between
+	// (±1 − X)/D, and likewise for Y; the box is missed where the two intervals do not meet,
+	// by more than 1e-12 of the slab (a line along an edge grazes).
+	double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+	auto slab = [&](double p, double v) {
+		if (v == 0.0)
+			return std::fabs(p) <= 1.0 + 1e-12;
+		const double t1 = (-1.0 - p) / v, t2 = (1.0 - p) / v, margin = 1e-12 / std::fabs(v);
+		lo = std::max(lo, std::min(t1, t2) - margin);
+		hi = std::min(hi, std::max(t1, t2) + margin);
+		return true;
+	};
+	if (!slab(X, D) || !slab(Y, E))
+		return true;
+	return lo > hi;
 }
 
 Box SuperellipseShape::ComputeAABB(const Pose& pose) const
