@@ -307,24 +307,6 @@ bool SuperellipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Ve
 	return true;
 }
 
-// An ellipse's point on the line through X along `dir` (SuperellipseLinePoint), or where the
-// line misses the ellipse (a separated pair of elongated ellipses: from 1 in 10 separated poses
-// at aspect 3 to nearly all at aspect 100) ContactFromLevel's answer for a miss, the surface point
-// on the ray from the centre through X, in closed form: the level is homogeneous of degree 2, so
-// that point is x/√λ(x). False only where neither applies (a grazing line, rounding).
-bool EllipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 dir, Vec2& point)
-{
-	if (SuperellipseLinePoint(s, p, X, dir, nullptr, point))
-		return true;
-	const Vec2 x = ToBody(p, X);
-	if (!s.LineMisses(x, InvRotate(p.q, dir)))
-		return false;
-	const double level = s.Level(x);
-	if (!(level > 1.0) || !std::isfinite(level))
-		return false;
-	point = ToWorld(p, x / std::sqrt(level));
-	return true;
-}
 } // namespace
 
 ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,

@@ -22,6 +22,41 @@ double Quad(const Sym22& m, Vec2 v) { return Dot(v, m * v); }
 
 } // namespace
 
+bool EllipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 dir, Vec2& point)
+{
+	// In the body frame scaled by the semi-axes, u = x/a, v = y/b and the level (f or f^1, the
+	// two plain-ellipse forms) is u² + v². Along the line, with du, dv the scaled direction:
+	// A t² + 2 B t + C = 0, A = du² + dv², B = u du + v dv, C = u² + v² − 1 (SuperellipseShape::
+	// FarCrossing's quadratic, its larger root in the same cancellation-free form); no real root
+	// beyond rounding is LineMisses' rule, and then the radial point is x/√λ(x), the level being
+	// homogeneous of degree 2. Inline, with the level computed once: the virtual Level,
+	// FarCrossing and LineMisses calls were a quarter of a warm 100:1 contact.
+	const SuperellipseTerms& t = s.Terms();
+	const Vec2 x = ToBody(p, X), d = InvRotate(p.q, dir);
+	const double u = x.x * t.invA, v = x.y * t.invB, du = d.x * t.invA, dv = d.y * t.invB;
+	const double level = u * u + v * v;
+	if (std::fabs(level - 1.0) <= 1e-10)
+	{
+		point = X;
+		return true;
+	}
+	const double A = du * du + dv * dv, B = u * du + v * dv, C = level - 1.0;
+	const double disc = B * B - A * C;
+	if (!(A > 0.0) || !std::isfinite(disc))
+		return false;
+	if (disc >= 0.0)
+	{
+		const double root = std::sqrt(disc);
+		const double far = B > 0.0 ? -C / (B + root) : (root - B) / A;
+		point = X + far * dir;
+		return std::isfinite(far);
+	}
+	if (!(disc < -1e-12 * (B * B + std::fabs(A * C))) || !(level > 1.0))
+		return false;
+	point = ToWorld(p, x / std::sqrt(level));
+	return true;
+}
+
 const SuperellipseShape* AsPlainEllipse(const Shape& s)
 {
 	if (s.Family() != ShapeFamily::ellipse && s.Family() != ShapeFamily::circle)
@@ -168,10 +203,13 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 			// ContactFromLevel's points, from what is at hand: along the line X + t·n, λA is
 			// λA(X) + 2t·n·MA·x + t²·nᵀMA·n, and likewise for B along −n. The larger root of each
 			// quadratic is the far crossing (the on-surface rule and the root's form as in
-			// SuperellipseShape::FarCrossing); a level within 1e-10 of 1 is its own crossing.
+			// SuperellipseShape::FarCrossing); a level within 1e-10 of 1 is its own crossing. Where
+			// the line misses the ellipse (no real root beyond rounding, SuperellipseShape::
+			// LineMisses' rule), ContactFromLevel's radial point: the centre plus the offset to X
+			// over √λ (λ is homogeneous of degree 2 in the offset).
 			normal = Normalize(gA);
 			const Vec2 n = normal;
-			auto crossing = [&](const Sym22& M, Vec2 dir, Vec2 g, double lam, Vec2& at) {
+			auto crossing = [&](const Sym22& M, Vec2 dir, Vec2 g, double lam, Vec2 centre, Vec2 offset, Vec2& at) {
 				if (std::fabs(lam - 1.0) <= 1e-10)
 				{
 					at = point;
@@ -179,14 +217,21 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 				}
 				const double qa = Quad(M, dir), qb = Dot(dir, g), qc = lam - 1.0;
 				const double disc = qb * qb - qa * qc;
-				if (!(qa > 0.0) || !(disc >= 0.0) || !std::isfinite(disc))
+				if (!(qa > 0.0) || !std::isfinite(disc))
 					return false;
+				if (!(disc >= 0.0))
+				{
+					if (!(disc < -1e-12 * (qb * qb + std::fabs(qa * qc))) || !(lam > 1.0))
+						return false; // grazing to rounding: the caller's search decides
+					at = centre + offset / std::sqrt(lam);
+					return true;
+				}
 				const double root = std::sqrt(disc);
 				const double t = qb > 0.0 ? -qc / (qb + root) : (root - qb) / qa;
 				at = point + t * dir;
 				return std::isfinite(t);
 			};
-			points->valid = crossing(MA, n, gA, lamA, points->a) && crossing(MB, -n, gB, lamB, points->b);
+			points->valid = crossing(MA, n, gA, lamA, pa.p, x, points->a) && crossing(MB, -n, gB, lamB, pb.p, x - rc, points->b);
 		}
 	}
 	else
@@ -229,6 +274,12 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 		gA = Vec2(double(la.xx * px + la.xy * py), double(la.xy * px + la.yy * py));
 		level = double((1 - sl) * levelA + sl * levelB);
 		point = Vec2(double(pa.p.x + LD(px)), double(pa.p.y + LD(py)));
+		if (points && LengthSquared(gA) > 0.0)
+		{
+			// The points in each body frame, where the levels carry no rotation's rounding.
+			normal = Normalize(gA);
+			points->valid = EllipseLinePoint(a, pa, point, normal, points->a) && EllipseLinePoint(b, pb, point, -normal, points->b);
+		}
 	}
 	if (!IsFinite(x) || !std::isfinite(level) || !std::isfinite(lamA) || !(LengthSquared(gA) > 0.0))
 	{

@@ -35,6 +35,12 @@ inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, con
 class SuperellipseShape;
 /// The shape as a plain ellipse or circle (n = m = 2, level f or f^1), else null.
 const SuperellipseShape* AsPlainEllipse(const Shape& s);
+/// A plain ellipse's point on the line through the world point X along `dir`, by ContactFromLevel's
+/// rule for a convex shape: X itself when its level is within 1e-10 of 1, else the far crossing
+/// (the larger root of the line's quadratic in the body frame), and where the line misses the
+/// ellipse beyond rounding the radial point, the surface point on the ray from the centre through
+/// X. False where none applies (a line grazing the ellipse to rounding): the caller searches.
+bool EllipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 dir, Vec2& point);
 /// The surface points of an ellipse pair on the line through the level point along the normal
 /// (ContactFromLevel's pointA and pointB), where the level solve gives them at little cost.
 struct EllipsePairPoints
