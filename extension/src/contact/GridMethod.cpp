@@ -237,6 +237,7 @@ struct GridScratch
 	std::vector<std::uint32_t> stamp; // value[k] is this call's where stamp[k] == generation
 	std::uint32_t generation = 0;
 	std::vector<char> scanned; // per run: evaluated whole
+	std::vector<int> scannedRuns; // those runs, in increasing order (bounded scans)
 	std::vector<std::pair<double, int>> order;
 	std::vector<int> minima;
 };
@@ -307,8 +308,10 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		// lowest bound goes first; only the runs whose bound is below the level found there are
 		// sorted (sorting all of them was a tenth of a heart contact).
 		double lowest = std::numeric_limits<double>::infinity();
+		scratch.scannedRuns.clear();
 		auto scan = [&](int g) {
 			scanned[g] = 1;
+			scratch.scannedRuns.push_back(g);
 			int first, last;
 			runSamples(g, first, last);
 			for (int k = first; k <= last && ok; ++k)
@@ -360,16 +363,19 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			consider(k, k - 1, k + 1);
 		consider(n - 1, n - 2, 0);
 	}
-	for (int g = 0; g < runs && ok && bounded; ++g)
+	std::vector<int>& scannedRuns = scratch.scannedRuns;
+	if (bounded)
+		std::sort(scannedRuns.begin(), scannedRuns.end());
+	for (size_t r = 0; r < scannedRuns.size() && ok && bounded; ++r)
 	{
-		if (!scanned[g])
-			continue;
+		const int g = scannedRuns[r];
 		int first, last;
 		runSamples(g, first, last);
 		if (scanned[g + 1 == runs ? 0 : g + 1])
 			--last;
-		for (int i = first; i <= last; ++i)
-		{
+		// Only a run's first and last samples can have a neighbour outside it (in a run not
+		// scanned, evaluated here); those in between compare with their own run's samples.
+		auto edge = [&](int i) {
 			const int k = i == n ? 0 : i;
 			const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
 			if (!evaluated(before))
@@ -377,7 +383,13 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			if (!evaluated(after))
 				ok = ok && evaluate(after);
 			consider(k, before, after);
-		}
+		};
+		const int inner = std::min(last, n - 1); // i + 1 ≤ n − 1 below: no wrap
+		edge(first);
+		for (int i = first + 1; i < inner; ++i)
+			consider(i, i - 1, i + 1);
+		for (int i = std::max(first + 1, inner); i <= last; ++i)
+			edge(i);
 	}
 	if (!ok)
 	{
@@ -428,10 +440,9 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 					return true;
 			return false;
 		};
-		for (int g = 0; g < runs; ++g)
+		for (int r = 0, count = bounded ? int(scannedRuns.size()) : runs; r < count; ++r)
 		{
-			if (!scanned[g])
-				continue;
+			const int g = bounded ? scannedRuns[r] : r;
 			if (bounded && !reaches(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]))
 				continue;
 			int first, last;
