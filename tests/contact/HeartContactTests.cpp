@@ -262,6 +262,31 @@ TEST_CASE("hearts: minima at a cusp of either curve and at random poses match th
 	CheckGridAgainstBruteForce(cases);
 }
 
+TEST_CASE("hearts: superellipses against hearts, the grid pruned by the superellipse's level bounds, match the brute force")
+{
+	// With a superellipse as A the grid skips the runs of the heart's samples where the
+	// superellipse's lower bound over the run's disc is above the lowest level found (for a heart
+	// as A it always did). Each pair is checked both ways, so both bounds prune: superellipses of
+	// exponents 2 to 8 and one with corners (n = 1), at random poses around a heart, and small
+	// ones in the notch, where the heart's level has two comparable minima along their surface.
+	auto super = [](double a, double b, double n, double m, Vec2 p, double angle) {
+		return Posed{MakeSuperellipse(a, b, n, m), ref::RefShape::Super(a, b, n, m), Pose(p, angle)};
+	};
+	std::vector<NamedPair> cases;
+	Random rng(2027);
+	const double exponents[][2] = {{2.0, 2.0}, {4.0, 4.0}, {8.0, 8.0}, {4.0, 8.0}, {2.5, 3.7}, {1.0, 1.0}};
+	for (int i = 0; i < 30; ++i)
+	{
+		const double* e = exponents[i % 6];
+		const double angle = rng.Angle(), distance = rng.Uniform(0.9, 2.4);
+		cases.push_back({"superellipse around a heart", super(0.8, 0.5, e[0], e[1], distance * Vec2(std::cos(angle), std::sin(angle)), rng.Angle()),
+		                 Heart(1.0, {0.0, 0.0}, rng.Angle()), false});
+	}
+	for (double x : {-0.02, 0.004, 0.03})
+		cases.push_back({"small superellipse in the notch", super(0.1, 0.06, 4.0, 4.0, {x, 1.12}, 0.3), Heart(1.0, {0.0, 0.0}, 0.0), false});
+	CheckGridAgainstBruteForce(cases);
+}
+
 TEST_CASE("grid: a contact on a diamond's edge next to its vertex refines past the vertex sample")
 {
 	// The samples crowd a vertex (half of them follow turning), so its neighbours lie within

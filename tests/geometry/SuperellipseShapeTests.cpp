@@ -489,3 +489,59 @@ TEST_CASE("superellipse: the far crossing of other exponents (Newton) against lo
 		CHECK(normals == 200);
 	}
 }
+
+TEST_CASE("superellipse: LevelLowerBound and LevelUpperBound bracket the level over the disc, tightly for small discs")
+{
+	// Reference: the smallest and largest levels over 40 rings of 120 points covering the disc and
+	// its centre, in long double from the closed form |x/a|^n + |y/b|^m (or its 1/ζ power). The
+	// bounds take the disc's nearest and farthest coordinates, so they are exact for a disc of
+	// radius 0 and lose about |∇λ|·ρ otherwise. A shape without bounds (a user shape) keeps the
+	// defaults, ∓∞: the grid method then evaluates every sample.
+	const std::shared_ptr<const SuperellipseShape> shapes[] = {MakeEllipse(1.0, 0.4), MakeSuperellipse(1.0, 0.6, 4.0, 4.0),
+	                                                           MakeSuperellipse(0.8, 1.5, 2.5, 3.7), MakeSuperellipse(1.0, 0.7, 1.0, 1.5),
+	                                                           SuperellipseShape::FromZeta(1.0, 0.5, 2.0)};
+	Random rng(79);
+	for (const auto& s : shapes)
+	{
+		CAPTURE(s->Describe());
+		const long double a = s->A(), b = s->B(), n = s->N(), m = s->M(), zeta = s->Zeta();
+		auto level = [&](Vec2 x) {
+			const long double f = std::pow(std::fabs(x.x / a), n) + std::pow(std::fabs(x.y / b), m);
+			return double(zeta > 0.0L ? std::pow(f, 1.0L / zeta) : f);
+		};
+		const double R = s->BoundingRadius();
+		for (int i = 0; i < 200; ++i)
+		{
+			const Vec2 c(rng.Uniform(-2.0 * R, 2.0 * R), rng.Uniform(-2.0 * R, 2.0 * R));
+			const double r = rng.LogUniform(1e-4 * R, R);
+			double lowest = level(c), highest = lowest;
+			for (int ring = 1; ring <= 40; ++ring)
+				for (int k = 0; k < 120; ++k)
+				{
+					const double t = 2.0 * kPi * k / 120.0;
+					const double v = level(c + (r * ring / 40.0) * Vec2(std::cos(t), std::sin(t)));
+					lowest = std::min(lowest, v);
+					highest = std::max(highest, v);
+				}
+			const double lower = s->LevelLowerBound(c, r), upper = s->LevelUpperBound(c, r);
+			CAPTURE(c.x);
+			CAPTURE(c.y);
+			CAPTURE(r);
+			CHECK(lower <= lowest * (1.0 + 1e-12));
+			CHECK(upper >= highest * (1.0 - 1e-12));
+			if (r < 1e-3 * R)
+			{
+				// Small discs: within ~|∇λ|·2ρ of the truth (the rings resolve ρ/40).
+				const double slope = Length(s->Gradient(c)) + 1.0;
+				CHECK(lowest - lower <= 4.0 * slope * r);
+				CHECK(upper - highest <= 4.0 * slope * r);
+			}
+		}
+		const Vec2 c(0.3 * s->A(), -0.2 * s->B());
+		CHECK(RelativeError(s->LevelLowerBound(c, 0.0), level(c)) < 1e-14);
+		CHECK(RelativeError(s->LevelUpperBound(c, 0.0), level(c)) < 1e-14);
+	}
+	const auto user = MakeUserShape(UserHeartDef(1.0));
+	CHECK(user->LevelLowerBound(Vec2(0.5, 0.5), 0.1) == -std::numeric_limits<double>::infinity());
+	CHECK(user->LevelUpperBound(Vec2(0.5, 0.5), 0.1) == std::numeric_limits<double>::infinity());
+}

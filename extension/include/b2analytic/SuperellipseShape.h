@@ -57,6 +57,11 @@ public:
 	/// larger root of a quadratic, for other exponents Newton on a convex function of t, from
 	/// where it descends monotonically (false when the line misses or only grazes the particle).
 	bool FarCrossing(Vec2 x, Vec2 d, double& t) const override;
+	/// Over the disc |x − c| ≤ ρ: |x| ≥ (|cx| − ρ)₊ and |y| ≥ (|cy| − ρ)₊, and the level grows
+	/// with |x| and |y|. The grid method prunes with it where a superellipse meets a heart.
+	double LevelLowerBound(Vec2 centre, double radius) const override;
+	/// Over the disc: |x| ≤ |cx| + ρ and |y| ≤ |cy| + ρ (as LevelLowerBound).
+	double LevelUpperBound(Vec2 centre, double radius) const override;
 	/// For an ellipse, the quadratic of FarCrossing without real roots (its discriminant below
 	/// rounding); for other exponents, a line that misses the bounding box |x| ≤ a, |y| ≤ b.
 	bool LineMisses(Vec2 x, Vec2 d) const override;

@@ -205,6 +205,20 @@ bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
 	return std::isfinite(t);
 }
 
+double SuperellipseShape::LevelLowerBound(Vec2 centre, double radius) const
+{
+	// The level at the disc's point nearest the axes in each coordinate: f = |x/a|^n + |y/b|^m
+	// is increasing in |x| and in |y| (and λ = f^{1/ζ} in f). A NaN centre gives NaN, which the
+	// grid's comparisons treat as no pruning.
+	const Vec2 near(std::max(std::fabs(centre.x) - radius, 0.0), std::max(std::fabs(centre.y) - radius, 0.0));
+	return Level(near);
+}
+
+double SuperellipseShape::LevelUpperBound(Vec2 centre, double radius) const
+{
+	return Level(Vec2(std::fabs(centre.x) + radius, std::fabs(centre.y) + radius));
+}
+
 bool SuperellipseShape::LineMisses(Vec2 x, Vec2 d) const
 {
 	const double X = x.x * m_terms.invA, Y = x.y * m_terms.invB, D = d.x * m_terms.invA, E = d.y * m_terms.invB;
