@@ -224,9 +224,10 @@ ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, c
 			return X;
 		const bool inside = level <= own;
 		double far = 0.0;
-		if (s.IsConvex() && s.FarCrossing(x, InvRotate(ps.q, dir), far))
+		const Vec2 bodyDir = InvRotate(ps.q, dir);
+		if (s.IsConvex() && s.FarCrossing(x, bodyDir, far))
 			return X + far * dir; // the common case: no search, no reach
-		if (!inside && s.IsConvex() && s.LineMisses(x, InvRotate(ps.q, dir)))
+		if (!inside && s.IsConvex() && s.LineMisses(x, bodyDir))
 			return RadialPoint(s, ps, X); // what the searches below end with, without them
 		const double reach = Distance(X, ps.p) + 1.01 * s.BoundingRadius();
 		if (s.IsConvex() && ConvexLineExtreme(s, ps, X, dir, level - own, reach, far))
@@ -306,7 +307,6 @@ bool SuperellipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Ve
 	point = X + t * dir;
 	return true;
 }
-
 } // namespace
 
 ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,

@@ -2,6 +2,7 @@
 #include "contact/SolverCore.h"
 
 #include "b2analytic/SuperellipseShape.h"
+#include "numerics/RootFinding.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,12 +26,11 @@ double Quad(const Sym22& m, Vec2 v) { return Dot(v, m * v); }
 bool EllipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 dir, Vec2& point)
 {
 	// In the body frame scaled by the semi-axes, u = x/a, v = y/b and the level (f or f^1, the
-	// two plain-ellipse forms) is u² + v². Along the line, with du, dv the scaled direction:
-	// A t² + 2 B t + C = 0, A = du² + dv², B = u du + v dv, C = u² + v² − 1 (SuperellipseShape::
-	// FarCrossing's quadratic, its larger root in the same cancellation-free form); no real root
-	// beyond rounding is LineMisses' rule, and then the radial point is x/√λ(x), the level being
-	// homogeneous of degree 2. Inline, with the level computed once: the virtual Level,
-	// FarCrossing and LineMisses calls were a quarter of a warm 100:1 contact.
+	// two plain-ellipse forms) is u² + v². Along the line, with du, dv the scaled direction, it is
+	// SuperellipseShape::FarCrossing's quadratic; where the line misses (LineMisses' rule) the
+	// radial point is x/√λ(x), the level being homogeneous of degree 2. Inline, with the level
+	// computed once: the virtual Level, FarCrossing and LineMisses calls were a quarter of a warm
+	// 100:1 contact.
 	const SuperellipseTerms& t = s.Terms();
 	const Vec2 x = ToBody(p, X), d = InvRotate(p.q, dir);
 	const double u = x.x * t.invA, v = x.y * t.invB, du = d.x * t.invA, dv = d.y * t.invB;
@@ -40,21 +40,21 @@ bool EllipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 di
 		point = X;
 		return true;
 	}
-	const double A = du * du + dv * dv, B = u * du + v * dv, C = level - 1.0;
-	const double disc = B * B - A * C;
-	if (!(A > 0.0) || !std::isfinite(disc))
-		return false;
-	if (disc >= 0.0)
+	double far = 0.0;
+	switch (QuadraticFarRoot(du * du + dv * dv, u * du + v * dv, level - 1.0, far))
 	{
-		const double root = std::sqrt(disc);
-		const double far = B > 0.0 ? -C / (B + root) : (root - B) / A;
+	case LineQuadratic::crosses:
 		point = X + far * dir;
-		return std::isfinite(far);
+		return true;
+	case LineQuadratic::misses:
+		if (!(level > 1.0))
+			return false;
+		point = ToWorld(p, x / std::sqrt(level));
+		return true;
+	case LineQuadratic::unknown:
+		break;
 	}
-	if (!(disc < -1e-12 * (B * B + std::fabs(A * C))) || !(level > 1.0))
-		return false;
-	point = ToWorld(p, x / std::sqrt(level));
-	return true;
+	return false;
 }
 
 const SuperellipseShape* AsPlainEllipse(const Shape& s)
@@ -215,21 +215,21 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 					at = point;
 					return true;
 				}
-				const double qa = Quad(M, dir), qb = Dot(dir, g), qc = lam - 1.0;
-				const double disc = qb * qb - qa * qc;
-				if (!(qa > 0.0) || !std::isfinite(disc))
-					return false;
-				if (!(disc >= 0.0))
+				double t = 0.0;
+				switch (QuadraticFarRoot(Quad(M, dir), Dot(dir, g), lam - 1.0, t))
 				{
-					if (!(disc < -1e-12 * (qb * qb + std::fabs(qa * qc))) || !(lam > 1.0))
-						return false; // grazing to rounding: the caller's search decides
+				case LineQuadratic::crosses:
+					at = point + t * dir;
+					return true;
+				case LineQuadratic::misses:
+					if (!(lam > 1.0))
+						return false;
 					at = centre + offset / std::sqrt(lam);
 					return true;
+				case LineQuadratic::unknown:
+					break; // grazing to rounding: the caller's search decides
 				}
-				const double root = std::sqrt(disc);
-				const double t = qb > 0.0 ? -qc / (qb + root) : (root - qb) / qa;
-				at = point + t * dir;
-				return std::isfinite(t);
+				return false;
 			};
 			points->valid = crossing(MA, n, gA, lamA, pa.p, x, points->a) && crossing(MB, -n, gB, lamB, pb.p, x - rc, points->b);
 		}

@@ -193,16 +193,9 @@ bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
 		return SuperellipseFarCrossing(m_terms, x, d, t);
 	// (X + t·D)² + (Y + t·E)² = 1 with X = x/a, D = dx/a, Y = y/b, E = dy/b (the own level is 1
 	// in both forms: f^(1/ζ) = 1 where f = 1): A t² + 2 B t + C = 0, A = D² + E², B = X D + Y E,
-	// C = X² + Y² − 1. The larger root (−B + √(B² − A C))/A; where B > 0 it cancels, so it is
-	// computed as −C/(B + √(B² − A C)) there (the product of the roots is C/A).
+	// C = X² + Y² − 1; the far crossing is its larger root.
 	const double X = x.x * m_terms.invA, Y = x.y * m_terms.invB, D = d.x * m_terms.invA, E = d.y * m_terms.invB;
-	const double A = D * D + E * E, B = X * D + Y * E, C = (X * X + Y * Y) - 1.0;
-	const double disc = B * B - A * C;
-	if (!(A > 0.0) || !(disc >= 0.0) || !std::isfinite(disc))
-		return false;
-	const double root = std::sqrt(disc);
-	t = B > 0.0 ? -C / (B + root) : (root - B) / A;
-	return std::isfinite(t);
+	return QuadraticFarRoot(D * D + E * E, X * D + Y * E, (X * X + Y * Y) - 1.0, t) == LineQuadratic::crosses;
 }
 
 double SuperellipseShape::LevelLowerBound(Vec2 centre, double radius) const
@@ -226,11 +219,9 @@ bool SuperellipseShape::LineMisses(Vec2 x, Vec2 d) const
 		return false;
 	if (m_n == 2.0 && m_m == 2.0)
 	{
-		// FarCrossing's quadratic A t² + 2 B t + C: no real root where B² − A C < 0. Its rounding
-		// is a few eps of B² + |A C|; a discriminant within 1e-12 of that is a grazing line.
-		const double A = D * D + E * E, B = X * D + Y * E, C = (X * X + Y * Y) - 1.0;
-		const double disc = B * B - A * C;
-		return A > 0.0 && std::isfinite(disc) && disc < -1e-12 * (B * B + std::fabs(A * C));
+		// FarCrossing's quadratic without a real root, clear of rounding.
+		double t = 0.0;
+		return QuadraticFarRoot(D * D + E * E, X * D + Y * E, (X * X + Y * Y) - 1.0, t) == LineQuadratic::misses;
 	}
 	// Other exponents: the particle lies in its box |X|, |Y| ≤ 1 (|X|^n ≤ 1 on it), so a line
 	// missing the box misses the particle. The line is in the slab |X + tD| ≤ 1 for t between

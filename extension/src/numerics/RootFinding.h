@@ -17,6 +17,31 @@ struct ScalarResult
 	bool converged = false;///< the bracket shrank below the tolerance within the cap
 };
 
+/// How a line meets an ellipse, from the quadratic A t² + 2B t + C of its level minus one.
+enum class LineQuadratic
+{
+	crosses, ///< real roots: the larger one is returned
+	misses,  ///< no real root, the discriminant below its rounding
+	unknown  ///< a grazing line (discriminant within rounding of 0), A ≤ 0, or anything non-finite
+};
+
+/// The larger root t of A t² + 2B t + C = 0 in the cancellation-free form: (√(B² − AC) − B)/A,
+/// or −C/(B + √(B² − AC)) where B > 0 (the product of the roots is C/A). The discriminant's
+/// rounding is a few eps of B² + |AC|; below −1e-12 of that the line misses.
+inline LineQuadratic QuadraticFarRoot(double A, double B, double C, double& t)
+{
+	const double disc = B * B - A * C;
+	if (!(A > 0.0) || !std::isfinite(disc))
+		return LineQuadratic::unknown;
+	if (disc >= 0.0)
+	{
+		const double root = std::sqrt(disc);
+		t = B > 0.0 ? -C / (B + root) : (root - B) / A;
+		return std::isfinite(t) ? LineQuadratic::crosses : LineQuadratic::unknown;
+	}
+	return disc < -1e-12 * (B * B + std::fabs(A * C)) ? LineQuadratic::misses : LineQuadratic::unknown;
+}
+
 /// Brent's method (Brent 1973, "zeroin") for a root of f in [a, b] with f(a), f(b) of opposite
 /// signs (or zero). Mixes bisection, secant and inverse quadratic steps; never leaves the
 /// bracket, so it converges whenever f is continuous. Stops when the bracket is below
