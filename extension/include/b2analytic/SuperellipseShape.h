@@ -58,10 +58,9 @@ public:
 	/// where it descends monotonically (false when the line misses or only grazes the particle).
 	bool FarCrossing(Vec2 x, Vec2 d, double& t) const override;
 	/// Over the disc |x − c| ≤ ρ: |x| ≥ (|cx| − ρ)₊ and |y| ≥ (|cy| − ρ)₊, and the level grows
-	/// with |x| and |y|. The grid method prunes with it where a superellipse meets a heart.
+	/// with |x| and |y|. The grid method prunes with it where a superellipse meets a heart. (No
+	/// upper bound: only the line search inside a non-convex particle would use one.)
 	double LevelLowerBound(Vec2 centre, double radius) const override;
-	/// Over the disc: |x| ≤ |cx| + ρ and |y| ≤ |cy| + ρ (as LevelLowerBound).
-	double LevelUpperBound(Vec2 centre, double radius) const override;
 	/// For an ellipse, the quadratic of FarCrossing without real roots (its discriminant below
 	/// rounding); for other exponents, a line that misses the bounding box |x| ≤ a, |y| ≤ b.
 	bool LineMisses(Vec2 x, Vec2 d) const override;

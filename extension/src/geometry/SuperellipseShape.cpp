@@ -207,11 +207,6 @@ double SuperellipseShape::LevelLowerBound(Vec2 centre, double radius) const
 	return Level(near);
 }
 
-double SuperellipseShape::LevelUpperBound(Vec2 centre, double radius) const
-{
-	return Level(Vec2(std::fabs(centre.x) + radius, std::fabs(centre.y) + radius));
-}
-
 bool SuperellipseShape::LineMisses(Vec2 x, Vec2 d) const
 {
 	const double X = x.x * m_terms.invA, Y = x.y * m_terms.invB, D = d.x * m_terms.invA, E = d.y * m_terms.invB;
