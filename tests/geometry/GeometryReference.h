@@ -21,6 +21,22 @@ namespace b2a::test
 // ---------------------------------------------------------------------------------------------
 // Level functions recomputed in long double (independent of the library's double code paths).
 
+/// The smallest and largest of level(x) over 40 rings of 120 points covering the disc
+/// |x − centre| ≤ radius, and at its centre: the reference of the level bounds' tests.
+template <class Level>
+void DiscLevelRange(Level&& level, Vec2 centre, double radius, double& lowest, double& highest)
+{
+	lowest = highest = level(centre);
+	for (int ring = 1; ring <= 40; ++ring)
+		for (int k = 0; k < 120; ++k)
+		{
+			const double t = 2.0 * kPi * k / 120.0;
+			const double v = level(centre + (radius * ring / 40.0) * Vec2(std::cos(t), std::sin(t)));
+			lowest = std::min(lowest, v);
+			highest = std::max(highest, v);
+		}
+}
+
 /// |x/a|^n + |y/b|^m, or its ζ-form (|x/a|^{2ζ} + |y/b|^{2ζ})^{1/ζ} when zeta > 0.
 inline long double SuperellipseLevelRef(Vec2 p, double a, double b, double n, double m, double zeta = 0.0)
 {

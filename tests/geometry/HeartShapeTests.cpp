@@ -216,15 +216,8 @@ TEST_CASE("heart: LevelLowerBound and LevelUpperBound bracket the level everywhe
 		{
 			const Vec2 c(rng.Uniform(-3.0 * R, 3.0 * R), rng.Uniform(-3.0 * R, 3.0 * R));
 			const double r = rng.LogUniform(1e-3 * R, R);
-			double lowest = h->Level(c), highest = lowest;
-			for (int ring = 1; ring <= 40; ++ring)
-				for (int k = 0; k < 120; ++k)
-				{
-					const double t = 2.0 * kPi * k / 120.0;
-					const double level = h->Level(c + (r * ring / 40.0) * Vec2(std::cos(t), std::sin(t)));
-					lowest = std::min(lowest, level);
-					highest = std::max(highest, level);
-				}
+			double lowest, highest;
+			DiscLevelRange([&](Vec2 x) { return h->Level(x); }, c, r, lowest, highest);
 			const double lower = h->LevelLowerBound(c, r), upper = h->LevelUpperBound(c, r);
 			CAPTURE(alpha);
 			CAPTURE(c.x);
