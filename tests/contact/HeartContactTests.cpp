@@ -43,10 +43,11 @@ struct Posed
 
 Posed Heart(double alpha, Vec2 p, double angle) { return {MakeHeart(alpha), ref::RefShape::Heart(alpha), Pose(p, angle)}; }
 Posed Circle(double r, Vec2 p) { return {MakeCircle(r), ref::RefShape::Circle(r), Pose(p, 0.2)}; }
-Posed Diamond(double a, double b, Vec2 p, double angle)
+Posed Super(double a, double b, double n, double m, Vec2 p, double angle)
 {
-	return {MakeSuperellipse(a, b, 1.0, 1.0), ref::RefShape::Super(a, b, 1.0L, 1.0L), Pose(p, angle)};
+	return {MakeSuperellipse(a, b, n, m), ref::RefShape::Super(a, b, n, m), Pose(p, angle)};
 }
+Posed Diamond(double a, double b, Vec2 p, double angle) { return Super(a, b, 1.0, 1.0, p, angle); }
 
 // Dense surface samples, computed once per distinct reference shape.
 const ref::Curve& DenseCurve(const ref::RefShape& s)
@@ -269,9 +270,6 @@ TEST_CASE("hearts: superellipses against hearts, the grid pruned by the superell
 	// as A it always did). Each pair is checked both ways, so both bounds prune: superellipses of
 	// exponents 2 to 8 and one with corners (n = 1), at random poses around a heart, and small
 	// ones in the notch, where the heart's level has two comparable minima along their surface.
-	auto super = [](double a, double b, double n, double m, Vec2 p, double angle) {
-		return Posed{MakeSuperellipse(a, b, n, m), ref::RefShape::Super(a, b, n, m), Pose(p, angle)};
-	};
 	std::vector<NamedPair> cases;
 	Random rng(2027);
 	const double exponents[][2] = {{2.0, 2.0}, {4.0, 4.0}, {8.0, 8.0}, {4.0, 8.0}, {2.5, 3.7}, {1.0, 1.0}};
@@ -279,11 +277,11 @@ TEST_CASE("hearts: superellipses against hearts, the grid pruned by the superell
 	{
 		const double* e = exponents[i % 6];
 		const double angle = rng.Angle(), distance = rng.Uniform(0.9, 2.4);
-		cases.push_back({"superellipse around a heart", super(0.8, 0.5, e[0], e[1], distance * Vec2(std::cos(angle), std::sin(angle)), rng.Angle()),
+		cases.push_back({"superellipse around a heart", Super(0.8, 0.5, e[0], e[1], distance * Vec2(std::cos(angle), std::sin(angle)), rng.Angle()),
 		                 Heart(1.0, {0.0, 0.0}, rng.Angle()), false});
 	}
 	for (double x : {-0.02, 0.004, 0.03})
-		cases.push_back({"small superellipse in the notch", super(0.1, 0.06, 4.0, 4.0, {x, 1.12}, 0.3), Heart(1.0, {0.0, 0.0}, 0.0), false});
+		cases.push_back({"small superellipse in the notch", Super(0.1, 0.06, 4.0, 4.0, {x, 1.12}, 0.3), Heart(1.0, {0.0, 0.0}, 0.0), false});
 	CheckGridAgainstBruteForce(cases);
 }
 
