@@ -274,6 +274,8 @@ TEST_CASE("superellipse: support bounds enclose the support value found by golde
 					best = k;
 			const double h = GoldenMax([&](double t) { return Dot(point(t), d); }, 2.0 * kPi * (best - 1) / samples,
 			                           2.0 * kPi * (best + 1) / samples);
+			// The support value itself (closed form for n = m, else from the support point).
+			CHECK(s->SupportValue(d) == doctest::Approx(h).epsilon(1e-12));
 			double lower = 0.0, upper = 0.0;
 			s->SupportBounds(d, lower, upper);
 			CHECK(lower <= h);
@@ -289,6 +291,34 @@ TEST_CASE("superellipse: support bounds enclose the support value found by golde
 				CHECK(upper - lower <= 3e-12 * h);
 			if (c.n == 4.0 && c.m == 4.0)
 				CHECK(lower >= h / std::pow(2.0, 0.25) * (1.0 - 1e-9));
+		}
+	}
+}
+
+TEST_CASE("superellipse: the support value is homogeneous of degree 1 from 1e-250 to 1e250")
+{
+	// h(λd) = λ·h(d): directions whose components' powers would leave the double range (e^{4/3}
+	// of 1e-250, e^q for the large q of n near 1) still give the scaled value, finite and exact.
+	const double exponents[] = {1.0, 1.05, 1.5, 2.0, 4.0, 8.0, 60.0};
+	Random rng(91);
+	for (double n : exponents)
+	{
+		const auto s = MakeSuperellipse(1.7, 0.6, n, n);
+		CAPTURE(s->Describe());
+		for (int i = 0; i < 50; ++i)
+		{
+			const Vec2 d = Rotate(Rot(rng.Angle()), Vec2(1, 0));
+			const double h = s->SupportValue(d);
+			CHECK(h == doctest::Approx(Dot(s->Support(d), d)).epsilon(1e-13));
+			for (double scale : {1e-250, 1e-120, 1e120, 1e250})
+			{
+				CAPTURE(scale);
+				const double hs = s->SupportValue(scale * d);
+				REQUIRE(std::isfinite(hs));
+				CHECK(hs / scale == doctest::Approx(h).epsilon(1e-13));
+			}
+			// One component zero: the value is the other one's extent.
+			CHECK(s->SupportValue(Vec2(d.x, 0.0)) == doctest::Approx(1.7 * std::fabs(d.x)).epsilon(1e-15));
 		}
 	}
 }

@@ -163,6 +163,10 @@ public:
 	/// Support point in the body frame: the point of the particle farthest along d
 	/// (for a non-convex shape, the support point of its convex hull). d need not be unit.
 	virtual Vec2 Support(Vec2 d) const;
+	/// The support value h(d) = max over the particle of x·d (body frame, d need not be unit):
+	/// Support(d)·d, which shapes with a closed form for the value override (separating axes and
+	/// AABBs need the value, not the point).
+	virtual double SupportValue(Vec2 d) const { return Dot(Support(d), d); }
 	/// A lower bound of the level over the disc |x − centre| ≤ radius (body frame), for the grid
 	/// method's pruning of surface runs that cannot hold the minimum. The default, −∞, means no
 	/// bound: every sample is evaluated. Shapes whose level is costly (the heart) override it.
@@ -187,7 +191,7 @@ public:
 	/// default is exact (both from Support); shapes with cheap inner and outer bodies override it.
 	virtual void SupportBounds(Vec2 d, double& lower, double& upper) const
 	{
-		lower = upper = Dot(Support(d), d);
+		lower = upper = SupportValue(d);
 	}
 	/// Tight world AABB of the particle at a pose: it touches the particle on all four sides.
 	/// (Box2D asks for it twice per moving body and step, so shapes with a cheaper form override it.)

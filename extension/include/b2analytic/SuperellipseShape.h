@@ -47,11 +47,15 @@ public:
 	Vec2 Gradient(Vec2 x) const override;
 	double RadiusAt(Vec2 u, double level) const override;
 	Vec2 Support(Vec2 d) const override;
+	/// For n = m the dual norm h = ‖(a·dx, b·dy)‖_q, q = n/(n − 1) (Hölder), without the point's
+	/// divisions: two cube roots and two square roots at n = 4. Otherwise Support(d)·d.
+	double SupportValue(Vec2 d) const override;
 	/// From nested bodies, with e = (a·dx, b·dy): the axis points (±a, 0), (0, ±b) lie inside and
 	/// the box |x| ≤ a, |y| ≤ b outside, so max(|ex|, |ey|) ≤ h ≤ |ex| + |ey|; the ellipse with the
 	/// same axes (support |e|) lies inside when n, m ≥ 2 and outside when n, m ≤ 2. No powers.
 	void SupportBounds(Vec2 d, double& lower, double& upper) const override;
-	/// Closed form for ellipses; otherwise two supports, the particle being symmetric about its centre.
+	/// The half-widths are two support values along the world axes pulled back, the particle
+	/// being symmetric about its centre.
 	Box ComputeAABB(const Pose& pose) const override;
 	/// The far crossing of the surface by the body line x + t·d: for an ellipse (n = m = 2) the
 	/// larger root of a quadratic, for other exponents Newton on a convex function of t, from

@@ -55,7 +55,7 @@ bool SeparatedAlong(const Shape& a, const Pose& pa, const Shape& b, const Pose& 
 		return false;
 	if (gap - highA - highB > 0.0)
 		return true;
-	return gap - Dot(a.Support(dA), dA) - Dot(b.Support(dB), dB) > 0.0;
+	return gap - a.SupportValue(dA) - b.SupportValue(dB) > 0.0;
 }
 
 // Write a manifold in Box2D's e_faceA form: normal and the point on A in A's frame, points on B

@@ -238,25 +238,41 @@ bool SuperellipseShape::LineMisses(Vec2 x, Vec2 d) const
 
 Box SuperellipseShape::ComputeAABB(const Pose& pose) const
 {
-	// The particle is symmetric about its centre, Support(−d) = −Support(d): the box is centred
-	// on the pose and two supports give its half-widths. For an ellipse, the support along the
-	// body direction e = (ex, ey) has e·x = √(a²ex² + b²ey²), and the world axes pulled back are
-	// (c, −s) and (s, c).
-	Vec2 half;
-	if (m_n == 2.0 && m_m == 2.0)
-	{
-		const double c = pose.q.c, s = pose.q.s;
-		half = Vec2(std::sqrt(m_a * m_a * c * c + m_b * m_b * s * s), std::sqrt(m_a * m_a * s * s + m_b * m_b * c * c));
-	}
-	else
-	{
-		half.x = Rotate(pose.q, Support(InvRotate(pose.q, Vec2(1.0, 0.0)))).x;
-		half.y = Rotate(pose.q, Support(InvRotate(pose.q, Vec2(0.0, 1.0)))).y;
-	}
+	// The particle is symmetric about its centre, h(−d) = h(d): the box is centred on the pose,
+	// and its half-widths are the support values along the world axes pulled back, (c, −s) and
+	// (s, c).
+	const double c = pose.q.c, s = pose.q.s;
+	const Vec2 half(SupportValue(Vec2(c, -s)), SupportValue(Vec2(s, c)));
 	Box b;
 	b.lower = pose.p - half;
 	b.upper = pose.p + half;
 	return b;
+}
+
+double SuperellipseShape::SupportValue(Vec2 d) const
+{
+	// h(d) = max X·e over the unit p-ball in scaled coordinates, e = (a·dx, b·dy): the dual norm
+	// ‖e‖_q, 1/p + 1/q = 1. Components far from 1 go through Support, which normalises against
+	// overflow and underflow (e^{4/3} of 1e-250 is below the double range).
+	const double ex = std::fabs(m_a * d.x), ey = std::fabs(m_b * d.y);
+	const double emax = std::max(ex, ey);
+	if (m_n != m_m || !(emax >= 1e-100 && emax <= 1e100) || !(std::min(ex, ey) >= 1e-100 || std::min(ex, ey) == 0.0))
+		return Dot(Support(d), d);
+	if (m_n == 2.0)
+		return std::sqrt(ex * ex + ey * ey);
+	if (m_n == 1.0)
+		return emax;
+	if (m_n == 4.0)
+	{
+		// q = 4/3: t = ex^{4/3} + ey^{4/3}, h = t^{3/4} = √t·⁴√t.
+		const double t = ex * CubeRoot(ex) + ey * CubeRoot(ey);
+		const double r = std::sqrt(t);
+		return r * std::sqrt(r);
+	}
+	// Divided by the larger component, so that no power overflows (q grows without bound as n
+	// approaches 1).
+	const double q = m_n / (m_n - 1.0);
+	return emax * std::pow(std::pow(ex / emax, q) + std::pow(ey / emax, q), 1.0 / q);
 }
 
 Vec2 SuperellipseShape::Support(Vec2 d) const
@@ -337,7 +353,7 @@ void SuperellipseShape::SupportBounds(Vec2 d, double& lower, double& upper) cons
 	if (!std::isfinite(upper) || !std::isfinite(lower))
 	{
 		// Overflowing components: the exact value (Support normalises against overflow).
-		lower = upper = Dot(Support(d), d);
+		lower = upper = SupportValue(d);
 	}
 }
 
