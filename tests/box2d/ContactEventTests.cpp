@@ -149,7 +149,7 @@ TEST_CASE("warm starting carries impulses across steps and lowers the solver's r
 TEST_CASE("Box2D's contact touches exactly when the true shapes overlap, while pairs pass, graze and drift apart")
 {
 	// The adapter skips the solve when the last normal or the line between the centres separates
-	// the particles. Here pairs inside each other's bounding circles pass at various offsets and
+	// the particles, and skips those tests for a pair its last solve found touching. Here pairs inside each other's bounding circles pass at various offsets and
 	// spins; before every step the true contact is computed directly, and after the step (whose
 	// collide phase saw the same transforms) Box2D's contact must agree with it.
 	struct Pair

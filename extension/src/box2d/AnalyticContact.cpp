@@ -262,17 +262,29 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		const double reach = pa.radius + pb.radius;
 		const Vec2 between = poseB.p - poseA.p;
 		if (LengthSquared(between) > reach * reach)
+		{
+			m_wasTouching = false;
 			return;
+		}
 		// Separating axes before the solve: the last normal this contact found (the exact
 		// separating direction then, and still one while the pair drifts apart or rests apart),
 		// then the line between the centres. In the hopper benchmark a third of the pairs that
 		// reach this point are apart, and most of them stop here. Their warm start is kept.
-		if (m_hasNormal && SeparatedAlong(shapeA, poseA, shapeB, poseB, m_lastNormal))
-			return;
-		const double distance = Length(between);
-		if (distance > 0.0 && SeparatedAlong(shapeA, poseA, shapeB, poseB, between / distance))
-			return;
+		// Not for a pair the last solve found touching: it almost always still touches, and then
+		// both axes fail, after the exact support values wherever the shape's bounds are loose (a
+		// superellipse n = 4 touches in its bounds' gap: in a 1000-particle packing, 1.14M failed
+		// exact tests beside 0.69M touching solves; 28k without them, at 6k more solves of pairs
+		// that had come apart). Such a pair's solve tells it as exactly (separation > 0: no points).
+		if (!m_wasTouching)
+		{
+			if (m_hasNormal && SeparatedAlong(shapeA, poseA, shapeB, poseB, m_lastNormal))
+				return;
+			const double distance = Length(between);
+			if (distance > 0.0 && SeparatedAlong(shapeA, poseA, shapeB, poseB, between / distance))
+				return;
+		}
 		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, m_solver, &m_warm);
+		m_wasTouching = c.Ok() && c.separation <= 0.0;
 		if (c.Ok())
 		{
 			m_lastNormal = c.normal;

@@ -67,6 +67,7 @@ private:
 	WarmStart m_warm;       // Newton's previous solution (analytic pairs)
 	Vec2 m_lastNormal;      // previous normal, world (a guess against polygons, a separating axis to try between analytic particles)
 	bool m_hasNormal = false;
+	bool m_wasTouching = false; // the last solve found the analytic pair touching (then no separating-axis tests)
 	// Box2D frees contacts without running their destructors when a world is destroyed, so
 	// every member here must be trivially destructible: the circle is borrowed from a cache.
 	const Shape* m_circle = nullptr; // the analytic circle standing in for a Box2D circle fixture
