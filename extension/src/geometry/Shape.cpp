@@ -51,13 +51,14 @@ struct DensePoint
 	Vec2 p;
 };
 
-// The dense pass of the last shape sampled on this thread. Creating a fixture asks one shape
-// for two sample counts in a row (its proxy's and the default), and the dense pass, the costly
-// part, is the same for both. The key is a serial number, not the address: a freed shape's
-// address may be reused by the next one.
+// The dense pass of the last shape sampled on this thread, at one resolution. Creating a fixture
+// of a non-convex shape asks for two sample counts in a row (its proxy's and the default), and
+// the dense pass is the costly part. The key is a serial number, not the address: a freed
+// shape's address may be reused by the next one.
 struct DenseCache
 {
 	std::uint64_t serial = 0;
+	int resolution = 0;
 	std::vector<DensePoint> dense;
 };
 thread_local DenseCache t_denseCache;
@@ -190,8 +191,11 @@ double WrapAngle(double t)
 
 namespace
 {
-// The dense pass: SurfacePoint at angles refined until chords are short and straight.
-void DenseSamples(const Shape& shape, std::vector<DensePoint>& dense)
+// The dense pass: SurfacePoint at angles refined until chords are short and straight, at a
+// resolution of 8 chords and 4 turns of the chord direction per final sample: 2048 and 1024 per
+// turn at the default 256 samples (about 3000 surface points), 256 and 128 for fewer than 32
+// samples (a proxy's 7 need no finer polyline to be spread along).
+void DenseSamples(const Shape& shape, int resolution, std::vector<DensePoint>& dense)
 {
 	const double L = shape.SurfaceLevel();
 	std::vector<double> start;
@@ -210,8 +214,8 @@ void DenseSamples(const Shape& shape, std::vector<DensePoint>& dense)
 		startPoints.push_back(shape.SurfacePoint(t, L));
 		scale = std::max(scale, Length(startPoints.back()));
 	}
-	const double hMax = scale * 2.0 * kPi / 2048.0;
-	const double tanTurnMax = std::tan(2.0 * kPi / 1024.0);
+	const double hMax = scale * 2.0 * kPi / (8.0 * resolution);
+	const double tanTurnMax = std::tan(2.0 * kPi / (4.0 * resolution));
 	struct Task { double t0; Vec2 p0; double t1; Vec2 p1; int depth; };
 	std::vector<Task> stack;
 	for (size_t i = 0; i < start.size(); ++i)
@@ -259,13 +263,16 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 	const double L = m_surfaceLevel;
 	// 1. Dense adaptive polar sampling: split an angle interval while its chord is long or
 	//    the chord direction turns, so thin tips and cusps are resolved.
+	//    Counts from the default up share the default's pass (their samples are as they were).
+	const int resolution = std::clamp(count, 32, kDefaultSampleCount);
 	DenseCache& cache = t_denseCache;
-	if (cache.serial != m_serial)
+	if (cache.serial != m_serial || cache.resolution != resolution)
 	{
 		cache.serial = 0; // stays invalid if the pass throws
 		cache.dense.clear();
-		DenseSamples(*this, cache.dense);
+		DenseSamples(*this, resolution, cache.dense);
 		cache.serial = m_serial;
+		cache.resolution = resolution;
 	}
 	// A copy: SurfacePoint below runs user code (a UserShape's function), which may sample
 	// another shape on this thread.
