@@ -55,7 +55,7 @@ Options:
   --full-every K   check one configuration in K (a fixed pseudo-random choice) against the
                    dense references (default 500)
   --pool N         superellipse shapes to draw from (default 16384, 512 with --quick; hearts:
-                   N/16). Making a shape costs milliseconds, so configurations share them.
+                   N/16). Making a heart costs a millisecond, so configurations share them.
 )";
 
 // ---------------------------------------------------------------------------------------------
