@@ -115,6 +115,11 @@ TEST_CASE("fuzz regression: a superellipse whose powers leave double range is re
 	CHECK(field(1e-30, 1e-30, 100.0, 100.0) == "a");
 	CHECK(field(1e30, 2.0, 12.0, 12.0) == "a");
 	CHECK(field(1.0, 1.0, 1e4, 1e4) == "n");      // |cos 45°|^n underflows between the axes
+	// Found by b2a_fuzz_contact_tool: the diagonal's point was right (the box's corner), but at
+	// other angles the lost |x/a|^n term put the surface outside the box; a grid solve against
+	// it sampled for a minute.
+	CHECK(field(1.0, 8.0, 7.777777777777778e51, 6.0) == "n");
+	CHECK(field(8.0, 1.0, 6.0, 7.777777777777778e51) == "m");
 	CHECK(field(1e120, 1e120, 1.0, 1.0) == "a");  // the second moment a³b overflows
 	CHECK_THROWS_AS(MakeEllipse(1.7976931348623157e308, 0.05), InvalidParameter);
 

@@ -50,13 +50,25 @@ void RequireRepresentable(const char* what, const SuperellipseShape& s)
 		throw InvalidParameter(what, "a", "must keep |x/a|^n within double precision's range (n = " + FormatNumber(s.N()) + ")", s.A());
 	if (!near(s.RadiusAt(Vec2(0.0, 1.0), 1.0), s.B()))
 		throw InvalidParameter(what, "b", "must keep |y/b|^m within double precision's range (m = " + FormatNumber(s.M()) + ")", s.B());
-	const Vec2 u = Normalize(Vec2(s.A(), s.B()));
-	const double r = s.RadiusAt(u, 1.0);
-	if (!(r > 0.0) || !std::isfinite(r) || !near(s.Level(r * u), 1.0))
+	// Between the axes: the diagonal of the box and 14 directions more. A surface point must lie
+	// in the box |x| ≤ a, |y| ≤ b at level 1. (Found by b2a_fuzz_contact_tool: a = 1, b = 8,
+	// n = 7.8e51, m = 6 passed at the diagonal, where |x/a|^n underflowed harmlessly, but at
+	// other angles |u_x/a|^n of the unit direction underflowed where t^n·|u_x/a|^n is the surface:
+	// its points lay far outside the box, and sampling it took a minute.)
+	for (int k = 1; k < 16; ++k)
 	{
-		const bool nLarger = s.N() >= s.M();
-		throw InvalidParameter(what, nLarger ? "n" : "m",
-		                       "must keep |x/a|^n + |y/b|^m within double precision's range between the axes", nLarger ? s.N() : s.M());
+		const double t = k * kPi / 32.0;
+		const Vec2 u = Normalize(Vec2(s.A() * std::cos(t), s.B() * std::sin(t)));
+		const double r = s.RadiusAt(u, 1.0);
+		const Vec2 p = r * u;
+		const double slack = 1.0 + 1e-9;
+		if (!(r > 0.0) || !std::isfinite(r) || !(std::fabs(p.x) <= slack * s.A()) || !(std::fabs(p.y) <= slack * s.B()) ||
+		    !near(s.Level(p), 1.0))
+		{
+			const bool nLarger = s.N() >= s.M();
+			throw InvalidParameter(what, nLarger ? "n" : "m",
+			                       "must keep |x/a|^n + |y/b|^m within double precision's range between the axes", nLarger ? s.N() : s.M());
+		}
 	}
 }
 // The largest distance from the centre to the surface, on the exact parametrisation
