@@ -23,17 +23,20 @@ struct Interval
 // whose points lie within tol of its extreme along d. Each end is bracketed in polar angle by
 // steps that double from a small one, starting from the end found last step when `cache` has
 // one (it moves little between steps), else from the support point; Brent's method finishes.
-Interval AnalyticFace(const Shape& shape, const Pose& pose, Vec2 d, Vec2 origin, Vec2 t, double tol, double* cache, bool& cached)
+// db is d in the body frame and q the support point along it (Face has them already).
+Interval AnalyticFace(const Shape& shape, const Pose& pose, Vec2 db, Vec2 q, Vec2 origin, Vec2 t, double tol, double* cache,
+                      bool& cached)
 {
 	Interval out;
-	const Vec2 db = InvRotate(pose.q, d);
-	const Vec2 q = shape.Support(db);
 	const double h = Dot(q, db);
 	const double ts = std::atan2(q.y, q.x);
 	// excess(θ) = (h − x(θ)·d) − tol: the depth below the extreme, less tol; ≤ 0 on the face.
 	auto excess = [&](double theta) { return (h - Dot(shape.SurfacePoint(theta), db)) - tol; };
 	// Angles are measured from ts, unwrapped into (−π, π].
 	auto relative = [&](double theta) { return std::remainder(theta - ts, 2.0 * kPi); };
+	const double atSupport = excess(ts); // the same for both ends
+	if (!(atSupport <= 0.0))
+		return out;
 	double ends[2];
 	for (int side = 0; side < 2; ++side)
 	{
@@ -41,9 +44,7 @@ Interval AnalyticFace(const Shape& shape, const Pose& pose, Vec2 d, Vec2 origin,
 		double start = 0.0;
 		if (cached && dir * relative(cache[side]) > 0.0)
 			start = relative(cache[side]);
-		double inner = 0.0, fin = excess(ts), outer = 0.0, fout = 0.0;
-		if (!(fin <= 0.0))
-			return out;
+		double inner = 0.0, fin = atSupport, outer = 0.0, fout = 0.0;
 		double step = cached ? 1e-3 : kPi / 64.0;
 		const double fs = start != 0.0 ? excess(ts + start) : fin;
 		if (fs <= 0.0)
@@ -75,7 +76,7 @@ Interval AnalyticFace(const Shape& shape, const Pose& pose, Vec2 d, Vec2 origin,
 			if (dir * inner <= 0.0)
 			{
 				inner = 0.0;
-				fin = excess(ts);
+				fin = atSupport;
 			}
 		}
 		const double theta = ts + FindRootBrent([&](double x) { return excess(ts + x); }, inner, outer, fin, fout, 1e-10, 100).x;
@@ -119,16 +120,15 @@ Interval PolygonFace(const Vec2* w, int count, Vec2 d, Vec2 origin, Vec2 t, doub
 	return out;
 }
 
-// Whether the arc of an analytic shape around its support point along d may be a flat patch.
+// Whether the arc of an analytic shape around its support point q (body frame) may be a flat patch.
 // Flat means nearly zero curvature where it touches: a blocky superellipse's side (its
 // curvature vanishes on the axis), not an ellipse, which is curved everywhere (κ·R = b/a) and
 // whose rocking must follow that curvature. So the curvature κ there must be below a tenth of
 // the shape's bounding radius's inverse, and then the arc, which stays within tol over about
 // 2·√(2·tol/κ), must be able to reach half of minWidth (a margin for arcs that are not parabolas)
 // before the costly search for its ends runs.
-bool MayBeFlat(const Shape& shape, const Pose& pose, Vec2 d, double tol, double minWidth)
+bool MayBeFlat(const Shape& shape, Vec2 q, double tol, double minWidth)
 {
-	const Vec2 q = shape.Support(InvRotate(pose.q, d));
 	const LevelDerivatives ld = shape.Derivatives(q);
 	const double g = Length(ld.gradient);
 	if (!(g > 0.0) || !std::isfinite(g))
@@ -148,9 +148,14 @@ Interval Face(const ManifoldSide& side, Vec2 d, Vec2 origin, Vec2 t, double tol,
 		return {};
 	if (side.shape)
 	{
-		if (!side.shape->IsConvex() || (side.shape->IsSmoothConvex() && !MayBeFlat(*side.shape, side.pose, d, tol, minWidth)))
+		if (!side.shape->IsConvex())
 			return {};
-		return AnalyticFace(*side.shape, side.pose, d, origin, t, tol, cache, cached);
+		// The support point along d, which both the flatness test and the face search start from.
+		const Vec2 db = InvRotate(side.pose.q, d);
+		const Vec2 q = side.shape->Support(db);
+		if (side.shape->IsSmoothConvex() && !MayBeFlat(*side.shape, q, tol, minWidth))
+			return {};
+		return AnalyticFace(*side.shape, side.pose, db, q, origin, t, tol, cache, cached);
 	}
 	if (side.vertices && side.count >= 2)
 		return PolygonFace(side.vertices, side.count, d, origin, t, tol);
