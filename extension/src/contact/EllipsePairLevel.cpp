@@ -21,6 +21,36 @@ Sym22 LevelMatrix(const SuperellipseShape& s, const Pose& p)
 
 double Quad(const Sym22& m, Vec2 v) { return Dot(v, m * v); }
 
+// ContactFromLevel's rule for an ellipse's point on the line X + t·dir, from the line's quadratic
+// A t² + 2B t + (λ − 1) in the level λ (λ the level at X): X itself when λ is within 1e-10 of 1,
+// the larger root where the line crosses, where it misses beyond rounding the radial point (only
+// then computed), and false where neither applies (X inside yet missed, or grazing to rounding:
+// the caller searches).
+template <class Radial>
+bool LineRule(Vec2 X, Vec2 dir, double A, double B, double level, Radial radial, Vec2& point)
+{
+	if (std::fabs(level - 1.0) <= 1e-10)
+	{
+		point = X;
+		return true;
+	}
+	double far = 0.0;
+	switch (QuadraticFarRoot(A, B, level - 1.0, far))
+	{
+	case LineQuadratic::crosses:
+		point = X + far * dir;
+		return true;
+	case LineQuadratic::misses:
+		if (!(level > 1.0))
+			return false;
+		point = radial();
+		return true;
+	case LineQuadratic::unknown:
+		break;
+	}
+	return false;
+}
+
 } // namespace
 
 bool EllipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 dir, Vec2& point)
@@ -35,26 +65,7 @@ bool EllipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 di
 	const Vec2 x = ToBody(p, X), d = InvRotate(p.q, dir);
 	const double u = x.x * t.invA, v = x.y * t.invB, du = d.x * t.invA, dv = d.y * t.invB;
 	const double level = u * u + v * v;
-	if (std::fabs(level - 1.0) <= 1e-10)
-	{
-		point = X;
-		return true;
-	}
-	double far = 0.0;
-	switch (QuadraticFarRoot(du * du + dv * dv, u * du + v * dv, level - 1.0, far))
-	{
-	case LineQuadratic::crosses:
-		point = X + far * dir;
-		return true;
-	case LineQuadratic::misses:
-		if (!(level > 1.0))
-			return false;
-		point = ToWorld(p, x / std::sqrt(level));
-		return true;
-	case LineQuadratic::unknown:
-		break;
-	}
-	return false;
+	return LineRule(X, dir, du * du + dv * dv, u * du + v * dv, level, [&] { return ToWorld(p, x / std::sqrt(level)); }, point);
 }
 
 const SuperellipseShape* AsPlainEllipse(const Shape& s)
@@ -210,26 +221,7 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 			normal = Normalize(gA);
 			const Vec2 n = normal;
 			auto crossing = [&](const Sym22& M, Vec2 dir, Vec2 g, double lam, Vec2 centre, Vec2 offset, Vec2& at) {
-				if (std::fabs(lam - 1.0) <= 1e-10)
-				{
-					at = point;
-					return true;
-				}
-				double t = 0.0;
-				switch (QuadraticFarRoot(Quad(M, dir), Dot(dir, g), lam - 1.0, t))
-				{
-				case LineQuadratic::crosses:
-					at = point + t * dir;
-					return true;
-				case LineQuadratic::misses:
-					if (!(lam > 1.0))
-						return false;
-					at = centre + offset / std::sqrt(lam);
-					return true;
-				case LineQuadratic::unknown:
-					break; // grazing to rounding: the caller's search decides
-				}
-				return false;
+				return LineRule(point, dir, Quad(M, dir), Dot(dir, g), lam, [&] { return centre + offset / std::sqrt(lam); }, at);
 			};
 			points->valid = crossing(MA, n, gA, lamA, pa.p, x, points->a) && crossing(MB, -n, gB, lamB, pb.p, x - rc, points->b);
 		}
