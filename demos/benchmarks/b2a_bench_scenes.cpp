@@ -38,6 +38,11 @@ velocity and 3 position iterations, sleeping off), each at every particle count:
            (b2a_demo_beverloo) fill a box 80*sqrt(N/4000) mm wide (the demo's 80 mm at 4000)
            with the outlet (0.3 of the width) gated; 0.05 s after that fall the gate opens,
            and after 0.02 s of flow the window measures the discharge.
+  layer    the packing's superellipses in a box as wide as N/24 lattice columns, so that
+           the layer is 24 particles deep at every count and each particle's neighbourhood,
+           drop height and speeds are the same at every N (in the packing and the hopper
+           they grow as sqrt(N)): the scene for how the cost per particle-step grows with N.
+           Measured as the packing is, while the layer settles.
 Each scene runs twice from the same lattice (same sizes, orientations and places): with
 analytic fixtures, and with plain Box2D b2PolygonShapes of 8 vertices on the same surfaces
 (InscribedPolygon: the outline inscribed; same density, friction and restitution; Box2D's
@@ -55,7 +60,7 @@ Options:
   --counts N,N,...     particle counts (default 1000,4000,16000; quick: the smallest given,
                        else 250)
   --steps N            steps in the timed window (default 200, quick 30)
-  --scenes S,S         scenes to run: packing, hopper (default both)
+  --scenes S,S         scenes to run: packing, hopper, layer (default packing,hopper)
   --threads N,N        also run the analytic variant with its contacts computed on N threads
                        before each step (b2a::PrepareContacts; variant analytic_<N>threads),
                        e.g. --threads 2; the steps are bit-identical, so only time changes.
@@ -123,6 +128,32 @@ GranularConfig HopperConfig(int count)
 	c.boxHeight = 10.0 * c.boxWidth;
 	c.outletWidth = 0.3 * c.boxWidth;
 	return c;
+}
+
+/// Rows of the layer scene's lattice, at every count.
+constexpr int kLayerRows = 24;
+
+/// The packing's particles in a box kLayerRows lattice rows deep: as wide as N/kLayerRows
+/// lattice cells (GranularScene's cell, 1.15 particle widths), centred on x = 0, so that the
+/// scene's local physics do not change with N.
+GranularConfig LayerConfig(int count)
+{
+	GranularConfig c;
+	c.particles = count;
+	const double cell = 1.15 * c.width;
+	const int perRow = (count + kLayerRows - 1) / kLayerRows;
+	c.boxWidth = c.width + (perRow + 0.5) * cell; // GranularScene fits int((boxWidth - width)/cell) = perRow
+	c.boxHeight = 3.0 * kLayerRows * cell;
+	c.outletWidth = 0.0;
+	return c;
+}
+
+/// The scene's configuration and its particles' name.
+GranularConfig SceneConfig(const std::string& scene, int count)
+{
+	if (scene == "hopper")
+		return HopperConfig(count);
+	return scene == "layer" ? LayerConfig(count) : PackingConfig(count);
 }
 
 /// The steps of a scene: its window starts when the top of the lattice (`top` mm above the
@@ -308,9 +339,10 @@ std::vector<std::string> SceneNames(const DemoOptions& opt)
 	std::string name;
 	while (std::getline(list, name, ','))
 	{
-		if (name != "packing" && name != "hopper")
+		if (name != "packing" && name != "hopper" && name != "layer")
 		{
-			std::fprintf(stderr, "b2a_bench_scenes: option '--scenes': unknown scene '%s' (packing, hopper)\n", name.c_str());
+			std::fprintf(stderr, "b2a_bench_scenes: option '--scenes': unknown scene '%s' (packing, hopper, layer)\n",
+			             name.c_str());
 			std::exit(2);
 		}
 		if (std::find(names.begin(), names.end(), name) == names.end())
@@ -318,7 +350,7 @@ std::vector<std::string> SceneNames(const DemoOptions& opt)
 	}
 	if (names.empty())
 	{
-		std::fprintf(stderr, "b2a_bench_scenes: option '--scenes' names no scene (packing, hopper)\n");
+		std::fprintf(stderr, "b2a_bench_scenes: option '--scenes' names no scene (packing, hopper, layer)\n");
 		std::exit(2);
 	}
 	return names;
@@ -410,7 +442,7 @@ int main(int argc, char** argv)
 			Run run;
 			run.scene = name;
 			run.count = count;
-			run.config = name == "hopper" ? HopperConfig(count) : PackingConfig(count);
+			run.config = SceneConfig(name, count);
 			run.config.seed = opt.seed;
 			run.particle = name == "hopper" ? "ellipses 2x0.66 mm" : "superellipses n=4";
 			Schedule(run, GranularScene(run.config).PileHeight(), windowSteps);
@@ -544,7 +576,8 @@ int main(int argc, char** argv)
 	text += "Box2D's b2World::GetProfile() in milliseconds over a window of " + std::to_string(windowSteps) +
 	        " steps (the same steps for both variants): step is the median, the phases are means (solve includes the "
 	        "broadphase). packing: superellipses n = 4 settling in a closed box 2√N mm wide; hopper: 2 × 0.66 mm "
-	        "ellipses discharging through an outlet of 0.3 of a box 80√(N/4000) mm wide. `8-gon` rows are the same "
+	        "ellipses discharging through an outlet of 0.3 of a box 80√(N/4000) mm wide; layer: the packing's "
+	        "superellipses settling in a layer 24 lattice rows deep at every N (box 2.3·N/24 mm wide). `8-gon` rows are the same "
 	        "scenes with plain Box2D polygons of 8 vertices on the same surfaces. `× 8-gon`: the analytic time over "
 	        "the 8-gons'. CPU ms: the median CPU time of the stepping thread (the profile is wall-clock time, which on "
 	        "a shared machine includes other processes' turns). growth: µs per particle-step over that at the smallest "

@@ -161,6 +161,51 @@ TEST_CASE("b2a_bench_scenes: the quick run times both scenes in all three varian
 	CHECK(text.str().find("| hopper | 250 | analytic |") != std::string::npos);
 }
 
+TEST_CASE("b2a_bench_scenes: the layer scene keeps its depth at every count, so the growth compares like with like")
+{
+	// Two counts whose lattices fill whole rows: 24 rows of 10 and of 20 particles.
+	const std::string out = "demo_out/bench_scenes_layer";
+	std::filesystem::remove_all(out);
+	std::filesystem::create_directories("demo_out");
+	const std::string cmd = std::string("\"") + B2A_BENCH_SCENES + "\" --counts 480,240 --steps 10 --scenes layer --out " + out +
+	                        " > " + out + ".stdout 2> " + out + ".stderr";
+	INFO("command: " << cmd);
+	REQUIRE(std::system(cmd.c_str()) == 0);
+	std::vector<std::string> header;
+	const std::vector<Row> rows = ReadCsv(out + "/scenes.csv", header);
+	REQUIRE(rows.size() == 4); // counts sorted: 240 analytic, 240 polygon8, 480 analytic, 480 polygon8
+	const double cell = 1.15 * 2.0; // GranularScene's lattice cell for 2 mm particles
+	for (size_t i = 0; i < rows.size(); ++i)
+	{
+		const Row& r = rows[i];
+		CAPTURE(i);
+		CHECK(r.at("scene") == "layer");
+		const double count = Number(r, "count");
+		CHECK(count == (i < 2 ? 240 : 480));
+		// The box holds count/24 lattice columns (and half a cell to spare), closed: no outlet.
+		CHECK(Number(r, "box_width_mm") == doctest::Approx(2.0 + (count / 24 + 0.5) * cell).epsilon(1e-3));
+		CHECK(Number(r, "outlet_mm") == 0.0);
+		CHECK(Number(r, "particles_end") == count);
+		CHECK(Number(r, "nonfinite") == 0);
+		CHECK(Number(r, "escaped") == 0);
+		// The same depth: the lattice's top falls for the same time at both counts, and the
+		// window starts at the same step.
+		CHECK(r.at("window_start_step") == rows[0].at("window_start_step"));
+		// The growth column: cost per particle-step over the same variant's at the smallest count.
+		const Row& smallest = rows[i % 2];
+		CHECK(Number(r, "growth_vs_smallest") ==
+		      doctest::Approx(Number(r, "us_per_particle_step") / Number(smallest, "us_per_particle_step")).epsilon(2e-3));
+	}
+	// The same local physics: about as many touching contacts per particle at both counts
+	// (the walls' share halves from 240 to 480; it is small either way).
+	for (size_t i : {0, 1})
+	{
+		CAPTURE(i);
+		CHECK(Number(rows[i + 2], "touching_contacts_per_particle") ==
+		      doctest::Approx(Number(rows[i], "touching_contacts_per_particle")).epsilon(0.15));
+	}
+}
+
 TEST_CASE("b2a_bench_scenes rejects bad options with exit status 2")
 {
 	CHECK(ExitStatus("--counts 12.5 --out demo_out/bench_scenes_bad") == 2);
