@@ -2,6 +2,7 @@
 #include "box2d/AnalyticProxyShape.h"
 
 #include "b2analytic/SurfaceQueries.h"
+#include "numerics/FloatRounding.h"
 
 #include <box2d/b2_block_allocator.h>
 #include <box2d/b2_collision.h>
@@ -18,9 +19,6 @@ namespace
 {
 // Tag in m_vertices[7]: two floats no polygon of ours ever has there.
 const b2Vec2 kTag(-1.7014118e38f, 3.1415926e-30f);
-
-float Down(double v) { return std::nextafter(float(v), -INFINITY); }
-float Up(double v) { return std::nextafter(float(v), INFINITY); }
 } // namespace
 
 AnalyticProxyShape::AnalyticProxyShape(AnalyticFixtureData* data)
@@ -100,8 +98,8 @@ void AnalyticProxyShape::ComputeAABB(b2AABB* aabb, const b2Transform& transform,
 {
 	// The tight box of the true shape, rounded outwards to float.
 	const Box box = Data().shape->ComputeAABB(WorldPose(transform));
-	aabb->lowerBound.Set(Down(box.lower.x), Down(box.lower.y));
-	aabb->upperBound.Set(Up(box.upper.x), Up(box.upper.y));
+	aabb->lowerBound.Set(FloatBelow(box.lower.x), FloatBelow(box.lower.y));
+	aabb->upperBound.Set(FloatAbove(box.upper.x), FloatAbove(box.upper.y));
 }
 
 b2MassData AnalyticMassData(const Shape& shape, const Pose& local, float density)
