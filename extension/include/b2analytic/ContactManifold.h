@@ -41,10 +41,12 @@ struct ContactManifold
 /// frame), so that the next step's search starts there. Keep one per persistent contact.
 struct ManifoldCache
 {
-	double endsA[2] = {0.0, 0.0}; ///< ends of A's stretch
-	double endsB[2] = {0.0, 0.0}; ///< ends of B's stretch
-	bool validA = false;          ///< endsA holds a previous answer
-	bool validB = false;          ///< endsB holds a previous answer
+	double endsA[2] = {0.0, 0.0};   ///< ends of A's stretch
+	double endsB[2] = {0.0, 0.0};   ///< ends of B's stretch
+	double slopesA[2] = {0.0, 0.0}; ///< d(depth − tol)/d(angle) at A's ends (0: none), for the next step's secant
+	double slopesB[2] = {0.0, 0.0}; ///< the same at B's ends
+	bool validA = false;            ///< endsA holds a previous answer
+	bool validB = false;            ///< endsB holds a previous answer
 };
 
 /// Build the manifold of a contact. Two particles that touch along a flat stretch (blocky

@@ -110,6 +110,9 @@ int PolygonVertices(const b2PolygonShape* s, Vec2* v)
 
 static_assert(std::is_trivially_destructible<WarmStart>::value && std::is_trivially_destructible<ManifoldCache>::value,
               "Box2D does not run contact destructors when a world is destroyed");
+// Box2D 2.4's block allocator serves blocks up to 640 bytes (b2_maxBlockSize, in
+// b2_block_allocator.cpp); a larger contact would be a malloc and a free each.
+static_assert(sizeof(AnalyticContact) <= 640, "AnalyticContact outgrew Box2D's largest block");
 
 bool AnalyticContact::Install()
 {
