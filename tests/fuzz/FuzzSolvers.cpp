@@ -106,12 +106,21 @@ void RunPolygon(FuzzInput& in, const Shape& a, const Pose& pa, double scale, boo
 	ManifoldSide sb;
 	sb.vertices = world;
 	sb.count = count;
-	const ContactManifold m = BuildContactManifold(c, sa, sb, in.Positive(1e-4, 0.1) * scale, in.Uniform(0.0, 1.0) * scale);
+	const double tol = in.Positive(1e-4, 0.1) * scale, minWidth = in.Uniform(0.0, 1.0) * scale;
+	const ContactManifold m = BuildContactManifold(c, sa, sb, tol, minWidth);
+	// Twice more through one cache, as on consecutive steps: the second call starts its face
+	// search from the first's ends and slopes.
+	ManifoldCache cache;
+	const ContactManifold first = BuildContactManifold(c, sa, sb, tol, minWidth, 0.0, &cache);
+	const ContactManifold second = BuildContactManifold(c, sa, sb, tol, minWidth, 0.0, &cache);
 	if (!polygonFinite)
 		return;
-	B2A_FUZZ_CHECK(m.count >= 0 && m.count <= 2);
-	for (int i = 0; i < m.count; ++i)
-		B2A_FUZZ_CHECK(IsFinite(m.points[i].pointB) && m.points[i].separation <= 0.0);
+	for (const ContactManifold* k : {&m, &first, &second})
+	{
+		B2A_FUZZ_CHECK(k->count >= 0 && k->count <= 2);
+		for (int i = 0; i < k->count; ++i)
+			B2A_FUZZ_CHECK(IsFinite(k->points[i].pointB) && k->points[i].separation <= 0.0);
+	}
 }
 } // namespace
 
