@@ -56,8 +56,8 @@ Interval AnalyticFace(const Shape& shape, const Pose& pose, Vec2 db, Vec2 q, Vec
 		const double fs = start != 0.0 ? excess(start) : atSupport;
 		// Secant steps from last step's end, the first on last step's slope (the excess rises
 		// outwards: slope·dir > 0), at most five. Once the next step would move less than half
-		// a tolerance, the end lies within a tolerance of the last point, on the side the step
-		// points to, and one point a tolerance that way proves it.
+		// a tolerance, the end lies within a tolerance of the last point: outwards if that point
+		// is on the face, else inwards. One point a tolerance that way proves it by its sign.
 		if (start != 0.0 && slopes[side] * dir > 0.0)
 		{
 			auto inRange = [&](double x) { return dir * x > 0.0 && std::fabs(x) < kPi; };
