@@ -148,7 +148,11 @@ GranularConfig LayerConfig(int count)
 	return c;
 }
 
-/// The scene's configuration and its particles' name.
+/// The scenes --scenes may name, and the list as its messages print it.
+const std::vector<std::string> kSceneNames = {"packing", "hopper", "layer"};
+const char* kSceneList = "packing, hopper, layer";
+
+/// The scene's configuration at a particle count.
 GranularConfig SceneConfig(const std::string& scene, int count)
 {
 	if (scene == "hopper")
@@ -339,10 +343,9 @@ std::vector<std::string> SceneNames(const DemoOptions& opt)
 	std::string name;
 	while (std::getline(list, name, ','))
 	{
-		if (name != "packing" && name != "hopper" && name != "layer")
+		if (std::find(kSceneNames.begin(), kSceneNames.end(), name) == kSceneNames.end())
 		{
-			std::fprintf(stderr, "b2a_bench_scenes: option '--scenes': unknown scene '%s' (packing, hopper, layer)\n",
-			             name.c_str());
+			std::fprintf(stderr, "b2a_bench_scenes: option '--scenes': unknown scene '%s' (%s)\n", name.c_str(), kSceneList);
 			std::exit(2);
 		}
 		if (std::find(names.begin(), names.end(), name) == names.end())
@@ -350,7 +353,7 @@ std::vector<std::string> SceneNames(const DemoOptions& opt)
 	}
 	if (names.empty())
 	{
-		std::fprintf(stderr, "b2a_bench_scenes: option '--scenes' names no scene (packing, hopper, layer)\n");
+		std::fprintf(stderr, "b2a_bench_scenes: option '--scenes' names no scene (%s)\n", kSceneList);
 		std::exit(2);
 	}
 	return names;
@@ -577,7 +580,8 @@ int main(int argc, char** argv)
 	        " steps (the same steps for both variants): step is the median, the phases are means (solve includes the "
 	        "broadphase). packing: superellipses n = 4 settling in a closed box 2√N mm wide; hopper: 2 × 0.66 mm "
 	        "ellipses discharging through an outlet of 0.3 of a box 80√(N/4000) mm wide; layer: the packing's "
-	        "superellipses settling in a layer 24 lattice rows deep at every N (box 2.3·N/24 mm wide). `8-gon` rows are the same "
+	        "superellipses settling in a layer " + std::to_string(kLayerRows) + " lattice rows deep at every N (box 2.3·N/" +
+	        std::to_string(kLayerRows) + " mm wide). `8-gon` rows are the same "
 	        "scenes with plain Box2D polygons of 8 vertices on the same surfaces. `× 8-gon`: the analytic time over "
 	        "the 8-gons'. CPU ms: the median CPU time of the stepping thread (the profile is wall-clock time, which on "
 	        "a shared machine includes other processes' turns). growth: µs per particle-step over that at the smallest "

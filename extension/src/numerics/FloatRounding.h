@@ -10,10 +10,11 @@ namespace b2a
 {
 
 /// The next float above f: std::nextafter(f, +∞) for every float, NaN and infinities included.
-/// Inline on the bit pattern for finite non-zero f, where the libm call was a fifth of a proxy
-/// AABB: for positive floats the patterns increase with the value, for negative ones they
-/// decrease, so one step up is +1 on the pattern of a positive float and −1 on a negative one
-/// (FLT_MAX + 1 is +∞'s pattern; the smallest negative subnormal − 1 is −0, as nextafter gives).
+/// Inline on the bit pattern for finite non-zero f, where the four libm calls were about a third
+/// of an n = 4 superellipse's proxy AABB and half of an ellipse's. For positive floats the
+/// patterns increase with the value, for negative ones they decrease, so one step up is +1 on
+/// the pattern of a positive float and −1 on a negative one (FLT_MAX + 1 is +∞'s pattern; the
+/// smallest negative subnormal − 1 is −0, as nextafter gives).
 inline float NextFloatUp(float f)
 {
 	if (!(f != 0.0f && std::fabs(f) <= std::numeric_limits<float>::max()))
