@@ -12,6 +12,7 @@
 #include <box2d/b2_polygon_shape.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -51,7 +52,8 @@ and overlapping poses it reports a contact for (GJK: the near-tangent ones). fai
 overlapping pose is a failure for it.
 
 Options: --out DIR, --seed N, --quick (under a minute), --poses N (per class and family),
---repeats N, --families NAME,NAME (only these, e.g. ellipse_a3,superellipse_n4). Writes DIR/pairs.csv, DIR/pairs.md and DIR/pairs_<family>.svg.
+--repeats N, --families NAME,NAME (only these, e.g. ellipse_a3,superellipse_n4; each family's poses are
+those of the full run, from its own generator seeded by --seed and its name). Writes DIR/pairs.csv, DIR/pairs.md and DIR/pairs_<family>.svg.
 )";
 
 // ------------------------------------------------------------------------------------------
@@ -180,6 +182,17 @@ Pose PlaceB(const Family& f, const Pose& pa, double angleB, Vec2 u, double gap)
 	if (sep(hi) - sep(lo) > 1e-6 * far)
 		return Pose(pa.p + (hi + 1e-3 * PairSize(f)) * u, angleB);
 	return Pose(pa.p + 0.5 * (lo + hi) * u, angleB);
+}
+
+// Each family's poses come from a generator of its own, seeded by the run's seed and the
+// family's name, so that `--families` reproduces a family's rows of the full run exactly.
+std::mt19937_64 FamilyRng(std::uint64_t seed, const std::string& name)
+{
+	std::uint64_t hash = 1469598103934665603ull; // FNV-1a: stable across compilers (std::hash is not)
+	for (const unsigned char ch : name)
+		hash = (hash ^ ch) * 1099511628211ull;
+	std::seed_seq seq{std::uint32_t(seed), std::uint32_t(seed >> 32), std::uint32_t(hash), std::uint32_t(hash >> 32)};
+	return std::mt19937_64(seq);
 }
 
 std::vector<PairPose> MakePoses(const Family& f, int perClass, int motions, std::mt19937_64& rng)
@@ -520,7 +533,6 @@ int main(int argc, char** argv)
 	const int motions = opt.quick ? 4 : 8;
 	const MachineInfo machine = GetMachineInfo();
 	Progress progress("b2a_bench_pairs");
-	std::mt19937_64 rng(opt.seed);
 
 	std::vector<Family> families = Families();
 	if (opt.extra.count("--families"))
@@ -547,6 +559,7 @@ int main(int argc, char** argv)
 			s->curve = std::make_shared<test::ref::Curve>(
 				test::ref::SampleCurve(s->ref, s->ref.Own(), s->ref.kind == RefShape::Kind::heart ? 20000 : 8192));
 		const double size = PairSize(f);
+		std::mt19937_64 rng = FamilyRng(opt.seed, f.name);
 		const std::vector<PairPose> poses = MakePoses(f, perClass, motions, rng);
 		std::vector<int> base, moved;
 		for (size_t i = 0; i < poses.size(); ++i)
