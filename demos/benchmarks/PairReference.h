@@ -7,10 +7,10 @@
 //  - the common level (Newton, min–max, the automatic path for convex pairs): X from the
 //    long-double references of the unit tests (Perram–Wertheim for ellipses, the fixed point of
 //    the surface minimum for other superellipses, tests/contact/ContactReference.h);
-//  - the one-sided level of the grid method, run both ways: X is the point of B's surface where
+//  - the one-sided level of the grid method, on each side: X is the point of B's surface where
 //    A's level is smallest (and the same with A and B swapped), from a dense long-double
-//    surface minimum; the deeper (or nearer) of the two contacts is the answer, as in
-//    GridContact.
+//    surface minimum; the grid contact is compared with the side it took (GridContact picks
+//    one, or both and then the deeper or nearer).
 // Here the contact is rebuilt from the reference X in long double, from the shapes' formulas
 // (RefShape), with the line crossings found by bisection to long-double resolution. Nothing
 // here calls the library's shapes or solvers.
@@ -216,22 +216,28 @@ inline RefContact CommonContactRef(const RefPosed& A, const RefPosed& B)
 	return RefContactFromPoint(A, B, X, C, C <= 1.0L, false, true, true);
 }
 
-/// The one-sided (grid-method) reference contact: the dense surface minimum both ways and the
-/// same choice between them as GridContact (the touching one, else the smaller separation).
-inline RefContact OneSidedContactRef(const RefPosed& A, const RefPosed& B, bool convexA, bool convexB)
+/// The one-sided (grid-method) reference contacts, both seen from A: A rescaled onto B's
+/// surface (`aOntoB`) and B onto A's (`bOntoA`, normal flipped and points swapped), each from
+/// the dense surface minimum.
+struct OneSidedRefs
+{
+	RefContact aOntoB, bOntoA;
+	bool touching = false; ///< the pair overlaps: either side at or below its own level
+};
+
+inline OneSidedRefs OneSidedContactRefs(const RefPosed& A, const RefPosed& B, bool convexA, bool convexB)
 {
 	auto side = [&](const RefPosed& P, const RefPosed& Q, bool convexP, bool convexQ) {
 		const auto m = test::ref::SurfaceMin(P.shape, P.pose, Q.shape, Q.pose, Q.shape.Own(), 0, 8, Q.curve);
 		return RefContactFromPoint(P, Q, m.point, m.value, m.value <= P.shape.Own(), true, convexP, convexQ);
 	};
-	const RefContact ab = side(A, B, convexA, convexB);
-	RefContact ba = side(B, A, convexB, convexA);
-	// Seen from A: flip the normal and swap the points.
-	ba.normal = -1.0L * ba.normal;
-	std::swap(ba.pointA, ba.pointB);
-	if (ab.touching != ba.touching)
-		return ab.touching ? ab : ba;
-	return ab.separation <= ba.separation ? ab : ba;
+	OneSidedRefs r;
+	r.aOntoB = side(A, B, convexA, convexB);
+	r.bOntoA = side(B, A, convexB, convexA);
+	r.bOntoA.normal = -1.0L * r.bOntoA.normal;
+	std::swap(r.bOntoA.pointA, r.bOntoA.pointB);
+	r.touching = r.aOntoB.touching || r.bOntoA.touching;
+	return r;
 }
 
 } // namespace b2a::bench

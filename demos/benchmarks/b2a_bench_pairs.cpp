@@ -46,7 +46,8 @@ answers are compared with long-double references:
   box2d_gjk<N>              b2Distance (GJK) on inscribed N-gons, N = 8 to 64
 Errors, relative to the pair's size (the mean bounding radius): contact point, normal angle
 (radians) and separation. Our methods against the reference of the level they solve (the
-common level, or the one-sided grid level run both ways); Box2D's over the near-tangent
+common level, or for the grid the one-sided level of the side it took, its verdict against
+both sides); Box2D's over the near-tangent
 and overlapping poses it reports a contact for (GJK: the near-tangent ones). failures: no answer, a non-finite one, or
 (Box2D) a contact missed where the shapes overlap; GJK reports no penetration, so every
 overlapping pose is a failure for it.
@@ -152,7 +153,7 @@ struct PairPose
 struct Reference
 {
 	RefContact common;  // convex families
-	RefContact oneSided;
+	OneSidedRefs oneSided;
 	bool hasCommon = false, hasOneSided = false;
 };
 
@@ -515,6 +516,22 @@ void Accumulate(const Answer& ans, const RefContact& ref, PoseClass cls, Convent
 	++e.compared;
 }
 
+// A grid contact is one-sided, on the side ChooseGridSide picks (both ways, the touching or
+// nearer answer, where it must): its errors are those against the reference of the side it
+// took, the one its points lie nearer, and its verdict is checked against both sides (the
+// pair overlaps when either does): a wrong one is a failure.
+void AccumulateOneSided(const Answer& ans, const OneSidedRefs& refs, double size, Errors& e)
+{
+	if (!ans.ok || (ans.separation <= 0.0) != refs.touching)
+	{
+		++e.failures;
+		return;
+	}
+	auto off = [&](const RefContact& r) { return std::fmax(DistanceL(ans.pointA, r.pointA), DistanceL(ans.pointB, r.pointB)); };
+	Accumulate(ans, off(refs.aOntoB) <= off(refs.bOntoA) ? refs.aOntoB : refs.bOntoA, PoseClass::separated, Convention::oneSided,
+	           size, e);
+}
+
 struct Row
 {
 	std::string family, method;
@@ -580,7 +597,7 @@ int main(int argc, char** argv)
 			}
 			if (poses[i].sequence < 0 || !f.convex)
 			{
-				refs[i].oneSided = OneSidedContactRef(A, B, IsConvexRef(f.a.ref), IsConvexRef(f.b.ref));
+				refs[i].oneSided = OneSidedContactRefs(A, B, IsConvexRef(f.a.ref), IsConvexRef(f.b.ref));
 				refs[i].hasOneSided = true;
 			}
 		}
@@ -598,8 +615,10 @@ int main(int argc, char** argv)
 			for (size_t i = 0; i < which.size(); ++i)
 			{
 				const Reference& r = refs[which[i]];
-				const RefContact& ref = m.convention == Convention::oneSided ? r.oneSided : r.common;
-				Accumulate(answers[i], ref, poses[which[i]].cls, m.convention, size, row.errors);
+				if (m.convention == Convention::oneSided)
+					AccumulateOneSided(answers[i], r.oneSided, size, row.errors);
+				else
+					Accumulate(answers[i], r.common, poses[which[i]].cls, m.convention, size, row.errors);
 			}
 			row.ns = MedianNanosecondsPerQuery([&] { m.run(f, poses, which, nullptr); }, int(which.size()), repeats);
 			rows.push_back(row);

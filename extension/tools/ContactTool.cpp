@@ -275,7 +275,7 @@ Modes:
   contact  the contact a physics engine uses: normal from A to B, point_a and point_b on the
            unscaled surfaces on the line through point along the normal, separation along
            the normal (negative when overlapping), scale the level value of the method used.
-           Methods: auto (per shape pair), newton, grid (run both ways).
+           Methods: auto (per shape pair), newton, grid (one side, or both: see ChooseGridSide).
 method in the answer: closed_form, ellipse_pair (two ellipses), newton, min_max, grid or overlap_axis
 (coincident centres).
 

@@ -343,3 +343,68 @@ TEST_CASE("hearts: a tip valley on the slope of a smooth basin, between samples 
 	const LevelResult seed9 = SolveGridScale(*cases[0].a.shape, cases[0].a.pose, *cases[0].b.shape, cases[0].b.pose);
 	CHECK(seed9.level == doctest::Approx(1.410104666635).epsilon(1e-11));
 }
+
+TEST_CASE("grid contact: one side where it decides, the same answer as that side's, and a separation of the size the better side gives")
+{
+	// References: the two one-sided solves themselves (SolveGridScale, A onto B and B onto A,
+	// each checked against brute force above) and their contacts. The verdict of either side
+	// alone is exact only where the rescaled particle's centre lies outside the other; the
+	// contact must agree with both sides' verdict, equal one side's contact bit for bit, and,
+	// apart, not report a gap more than a few times the better side's (a single side's line
+	// can cross a non-convex particle far from the point: the guard that falls back to both).
+	struct Pair
+	{
+		ShapePtr a, b;
+	};
+	const Pair pairs[] = {{MakeHeart(1.0), MakeHeart(0.7)}, {MakeHeart(1.0), MakeSuperellipse(0.8, 0.5, 4, 4)},
+	                      {MakeSuperellipse(0.8, 0.5, 4, 4), MakeHeart(1.0)}};
+	Random rng(77);
+	int oneSide = 0, total = 0;
+	for (const Pair& p : pairs)
+	{
+		const double reach = p.a->BoundingRadius() + p.b->BoundingRadius();
+		for (int k = 0; k < 150; ++k)
+		{
+			const Pose pa(Vec2(rng.Uniform(-1, 1), rng.Uniform(-1, 1)), rng.Angle());
+			const double dir = rng.Angle();
+			const Pose pb(pa.p + rng.Uniform(0.3, 1.05) * reach * Vec2(std::cos(dir), std::sin(dir)), rng.Angle());
+			const LevelResult ab = SolveGridScale(*p.a, pa, *p.b, pb), ba = SolveGridScale(*p.b, pb, *p.a, pa);
+			REQUIRE(ab.Ok());
+			REQUIRE(ba.Ok());
+			const ContactResult cab = ContactFromLevel(*p.a, pa, *p.b, pb, ab, ab.level <= p.a->SurfaceLevel(), true);
+			const ContactResult cba = FlipContact(ContactFromLevel(*p.b, pb, *p.a, pa, ba, ba.level <= p.b->SurfaceLevel(), true));
+			const ContactResult c = ComputeContact(*p.a, pa, *p.b, pb);
+			CAPTURE(k);
+			REQUIRE(c.Ok());
+			CHECK(c.touching == (cab.touching || cba.touching));
+			const bool isAB = c.level == cab.level && c.point.x == cab.point.x && c.separation == cab.separation;
+			const bool isBA = c.level == cba.level && c.point.x == cba.point.x && c.separation == cba.separation;
+			CHECK((isAB || isBA));
+			if (!c.touching)
+				CHECK(c.separation <= 4.5 * std::min(cab.separation, cba.separation) + 1e-9 * reach);
+			// One side ran where the contact's iteration count is that side's alone.
+			const GridSide side = ChooseGridSide(*p.a, pa, *p.b, pb);
+			if (side != GridSide::bothWays && c.iterations == (side == GridSide::aOntoB ? ab : ba).iterations)
+				++oneSide;
+			++total;
+		}
+	}
+	CAPTURE(oneSide);
+	CHECK(oneSide > 2 * total / 5); // (the rest: a centre inside the other, deep, or a guard)
+
+	// A small heart dropping tip first into a big one's notch: A's side alone measures its gap
+	// along a line that crosses the small heart far from the point (0.08 where the gap is
+	// 3e-5); the contact takes B's side there.
+	const auto small = MakeHeart(0.05), big = MakeHeart(1.0);
+	for (double t : {0.70, 0.71, 0.715, 0.7158})
+	{
+		const Pose pa(Vec2(0.02, 2.0 - t), 0.1), pb(Vec2(0.0, 0.0), 0.0);
+		const LevelResult ab = SolveGridScale(*small, pa, *big, pb), ba = SolveGridScale(*big, pb, *small, pa);
+		const ContactResult cab = ContactFromLevel(*small, pa, *big, pb, ab, false, true);
+		const ContactResult cba = FlipContact(ContactFromLevel(*big, pb, *small, pa, ba, false, true));
+		const ContactResult c = ComputeContact(*small, pa, *big, pb);
+		CAPTURE(t);
+		CHECK(!c.touching);
+		CHECK(c.separation <= 1.01 * std::min(cab.separation, cba.separation));
+	}
+}

@@ -3,8 +3,8 @@
 // References are the identities themselves, applied to independent solves:
 //  - swap: ComputeContact(B, A) must be ComputeContact(A, B) with the normal flipped and the
 //    points swapped, with the same separation, level and verdict (ContactResult's contract).
-//    The grid path is documented to do so exactly (it runs both one-sided solves and picks
-//    between them by a rule symmetric in A and B), so there it is compared bit for bit; the
+//    The grid path is documented to do so exactly (it picks its side, or both sides and then
+//    between them, by rules symmetric in A and B), so there it is compared bit for bit; the
 //    Newton path solves a different but equivalent system (ψA − ψB = 0 with the roles of the
 //    multiplier inverted), so there both agree to rounding: 1e-10 of the size.
 //  - rigid motion: rotating and translating both particles together must leave level,

@@ -16,9 +16,9 @@ using ContactFunction = ContactResult (*)(const Shape& a, const Pose& pa, const 
 ///  - automatic: the dispatch table: closed form for circle pairs; Perram and Wertheim's
 ///    one-dimensional form for ellipse pairs (EllipseContact); Newton on the common level
 ///    (warm-started from `warm`) with the min–max fallback for smooth, strictly convex pairs;
-///    the grid method with refinement, run both ways, for non-smooth or non-convex shapes.
+///    the grid method with refinement (GridContact) for non-smooth or non-convex shapes.
 ///  - newton: the common level by Newton alone (fails for shapes it cannot handle).
-///  - grid: the grid method both ways for any pair.
+///  - grid: the grid method (GridContact) for any pair.
 /// Coincident centres (no level point between them) get the axis of least overlap.
 ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                              MethodChoice method = MethodChoice::automatic, const SolverOptions& options = {},
@@ -60,7 +60,29 @@ ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, con
 ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
 /// Common level (Newton + min–max fallback) for smooth convex shapes; grid otherwise.
 ContactResult ConvexContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
-/// Grid method both ways with refinement, for any shapes.
+/// Which one-sided grid solves GridContact runs: one particle rescaled onto the other's surface
+/// (its samples), or both ways.
+enum class GridSide
+{
+	aOntoB,  ///< A rescaled onto B's surface
+	bOntoA,  ///< B rescaled onto A's surface
+	bothWays ///< both, the touching (else the deeper or nearer) answer taken
+};
+
+/// GridContact's choice, symmetric in A and B (swapping them swaps aOntoB and bOntoA). One side
+/// decides whether the pair overlaps, exactly, when the rescaled particle's centre lies outside
+/// the other (then it cannot lie inside the other, and it meets the other exactly where the
+/// other's surface enters it, the other inside it included): a convex particle is rescaled
+/// before a non-convex one (its level is the cheaper and its bounds the tighter), else the one
+/// whose centre lies deeper in the other's level (relative to its surface level: the smaller
+/// of two similar particles), ties by pose; the other side where that centre lies inside, and
+/// both ways where each centre lies inside the other.
+GridSide ChooseGridSide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb);
+
+/// The grid method with refinement, for any shapes: on the side ChooseGridSide picks, and both
+/// ways where it picks both or where that side's answer fails a check (the rescaled particle
+/// deep in the other, the point on its corner, or a gap along the normal unlike the level's
+/// first-order gap: a line that crossed a non-convex particle far from the point).
 ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
 
 } // namespace b2a
