@@ -408,3 +408,24 @@ TEST_CASE("grid contact: one side where it decides, the same answer as that side
 		CHECK(c.separation <= 1.01 * std::min(cab.separation, cba.separation));
 	}
 }
+
+TEST_CASE("grid contact: of two particles of very different sizes the larger is rescaled, onto the smaller's dense samples")
+{
+	// From b2a_stress --seed 1 (configuration 9427): a heart 1e-4 the other's size (α = 1.9e-4
+	// against 9.8e3) built touching, at A's level 1.039e-4 on B's surface. B's 256 samples lie
+	// 3.4 apart, 180 times A's size: rescaled onto them, A was found at 0.0707, not touching.
+	// Reference: the brute-force minima both ways (200000 samples each, long double).
+	const Posed a{MakeHeart(0x1.91dacca229a07p-13), ref::RefShape::Heart(0x1.91dacca229a07p-13),
+	              Pose(Vec2(0x1.2874a0f6b18aep-1, -0x1.3a1df20a44bd4p-3), 0x1.83f0ab8e211b4p+0)};
+	const Posed b{MakeHeart(0x1.3110ca2ea2974p+13), ref::RefShape::Heart(0x1.3110ca2ea2974p+13),
+	              Pose(Vec2(-0x1.30e4998700f09p+6, -0x1.fd89263ae3e99p+5), -0x1.317490c71cc74p+1)};
+	const ref::SurfaceMinResult ab = BruteForce(a, b), ba = BruteForce(b, a);
+	const bool want = ab.value <= a.refShape.Own() || ba.value <= b.refShape.Own();
+	CHECK(want);
+	CHECK(ChooseGridSide(*a.shape, a.pose, *b.shape, b.pose) == GridSide::bOntoA);
+	CHECK(ChooseGridSide(*b.shape, b.pose, *a.shape, a.pose) == GridSide::aOntoB);
+	const ContactResult c = ComputeContact(*a.shape, a.pose, *b.shape, b.pose);
+	REQUIRE(c.Ok());
+	CHECK(c.touching == want);
+	CHECK(std::fabs(LD(c.level) - ba.value) <= 1e-9L * std::max(std::fabs(ba.value), b.refShape.Own()));
+}

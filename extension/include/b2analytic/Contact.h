@@ -72,11 +72,12 @@ enum class GridSide
 /// GridContact's choice, symmetric in A and B (swapping them swaps aOntoB and bOntoA). One side
 /// decides whether the pair overlaps, exactly, when the rescaled particle's centre lies outside
 /// the other (then it cannot lie inside the other, and it meets the other exactly where the
-/// other's surface enters it, the other inside it included): a convex particle is rescaled
-/// before a non-convex one (its level is the cheaper and its bounds the tighter), else the one
-/// whose centre lies deeper in the other's level (relative to its surface level: the smaller
-/// of two similar particles), ties by pose; the other side where that centre lies inside, and
-/// both ways where each centre lies inside the other.
+/// other's surface enters it, the other inside it included). Of two particles more than twice
+/// the other's size the larger is rescaled (the samples must be dense against it); of similar
+/// ones a convex particle before a non-convex one (its level is the cheaper and its bounds the
+/// tighter), else the one whose centre lies deeper in the other's level (relative to its
+/// surface level), ties by pose; the other side where that centre lies inside, and both ways
+/// where each centre lies inside the other.
 GridSide ChooseGridSide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb);
 
 /// The grid method with refinement, for any shapes: on the side ChooseGridSide picks, and both

@@ -430,8 +430,15 @@ GridSide ChooseGridSide(const Shape& a, const Pose& pa, const Shape& b, const Po
 	const bool canA = centreAInB > 1.0 && a.Level(Vec2()) < a.SurfaceLevel();
 	const bool canB = centreBInA > 1.0 && b.Level(Vec2()) < b.SurfaceLevel();
 	auto key = [](const Pose& p) { return std::make_tuple(p.p.x, p.p.y, p.q.c, p.q.s); };
+	// The side that samples the smaller particle, where one is more than twice the other: the
+	// samples (256 of them) must be dense against the rescaled particle, or the refinement can
+	// miss a dip in its level narrower than their spacing (a heart 1e-4 the size of the other,
+	// rescaled onto it, was found 680 times too high and not touching).
+	const double ra = a.BoundingRadius(), rb = b.BoundingRadius();
 	bool preferA;
-	if (a.IsConvex() != b.IsConvex())
+	if (ra > 2.0 * rb || rb > 2.0 * ra)
+		preferA = ra > rb;
+	else if (a.IsConvex() != b.IsConvex())
 		preferA = a.IsConvex();
 	else if (centreAInB != centreBInA)
 		preferA = centreAInB < centreBInA;
