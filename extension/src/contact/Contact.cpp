@@ -87,20 +87,25 @@ ContactResult Failed(const LevelResult& level)
 	return c;
 }
 
-// True when the body point lies on one of the shape's corners (the heart's tip and notch, the
-// vertices of exponent-1 superellipses): there the gradient has no meaningful direction.
-bool AtCorner(const Shape& s, Vec2 x)
+// The corner (index into CornerDirections and CornerPoints) whose ray the body point lies on,
+// within 1e-7 rad, or −1 (the heart's tip and notch, the vertices of exponent-1
+// superellipses): at a corner the gradient has no meaningful direction.
+int CornerAt(const Shape& s, Vec2 x)
 {
-	// Within 1e-7 rad of a corner's ray: on its side of the centre, |u × x| ≤ sin(1e-7)·|x|
-	// (NearCorner's test, without the atan2).
+	// On the ray's side of the centre, |u × x| ≤ sin(1e-7)·|x| (NearCorner's test, without the
+	// atan2).
 	if (s.CornerAngles().empty() || !(LengthSquared(x) > 0.0))
-		return false;
+		return -1;
 	const double off = 1e-7 * Length(x); // sin(1e-7) = 1e-7 to 2e-22
-	for (const Vec2 u : s.CornerDirections())
-		if (Dot(u, x) > 0.0 && std::fabs(Cross(u, x)) < off)
-			return true;
-	return false;
+	const std::vector<Vec2>& rays = s.CornerDirections();
+	for (size_t i = 0; i < rays.size(); ++i)
+		if (Dot(rays[i], x) > 0.0 && std::fabs(Cross(rays[i], x)) < off)
+			return int(i);
+	return -1;
 }
+
+// True when the body point lies on one of the shape's corners.
+bool AtCorner(const Shape& s, Vec2 x) { return CornerAt(s, x) >= 0; }
 
 // A convex shape's extreme point along `dir` on the line X + t·dir (the largest root of
 // g(t) = λ(X + t·dir) − own), by Newton from t = 0, where g(0) = g0. g is convex along the line
@@ -387,23 +392,22 @@ namespace
 {
 // Whether one side's grid contact (P rescaled onto the other's surface at X) stands alone: P not
 // deep in the other (its level at least a quarter of its own: deeper, P may cross a thin wall's
-// mid-plane, and then its side of the wall is the wrong one), X not on a corner of P, and the
-// separation along the normal of the size of the first-order gap (λP(X) − own)/|∇λP(X)| (where
-// the line through X along the normal crosses P far from X, a non-convex P's other lobe, it is
-// not, and the other side says better). Where it does not, both sides run, as for nested
-// centres.
+// mid-plane, and then its side of the wall is the wrong one), and the separation along the
+// normal of the size of the gap from X to P's surface (where the line through X along the
+// normal crosses P far from X, a non-convex P's other lobe, it is not, and the other side says
+// better). Where it does not, both sides run, as for nested centres.
 bool OneSideHolds(const Shape& p, const Pose& pp, const LevelResult& level, const ContactResult& c)
 {
 	const double own = p.SurfaceLevel();
 	if (!(level.level >= 0.25 * own))
 		return false;
-	// At a corner of P (a heart's tip) the level grows like |x|^{2/3}: the first-order gap says
-	// nothing there.
+	// The gap from X to P's surface: first order along the gradient, and at a corner of P (a
+	// heart's tip, where the level grows like |x|^{2/3} across the ray and the gradient says
+	// nothing) along the corner's ray, |x| − |corner|.
 	const Vec2 x = ToBody(pp, level.point);
-	if (AtCorner(p, x))
-		return false;
-	const double slope = Length(p.Gradient(x));
-	const double gap = (level.level - own) / slope;
+	const int corner = CornerAt(p, x);
+	const double gap = corner >= 0 ? Length(x) - Length(p.CornerPoints()[size_t(corner)])
+	                               : (level.level - own) / Length(p.Gradient(x));
 	const double size = p.BoundingRadius();
 	if (!std::isfinite(gap))
 		return false;
