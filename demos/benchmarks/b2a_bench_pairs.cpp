@@ -48,8 +48,9 @@ Errors, relative to the pair's size (the mean bounding radius): contact point, n
 (radians) and separation. Our methods against the reference of the level they solve (the
 common level, or for the grid the one-sided level of the side it took, its verdict against
 both sides); Box2D's over the near-tangent
-and overlapping poses it reports a contact for (GJK: the near-tangent ones). failures: no answer, a non-finite one, or
-(Box2D) a contact missed where the shapes overlap; GJK reports no penetration, so every
+and overlapping poses it reports a contact for (GJK: the near-tangent ones). failures: no answer, a non-finite one, a
+wrong verdict (the grid: the plain grid calls near-tangent touching pairs apart), or (Box2D) a contact missed where
+the shapes overlap; GJK reports no penetration, so every
 overlapping pose is a failure for it.
 
 Options: --out DIR, --seed N, --quick (under a minute), --poses N (per class and family),
@@ -660,7 +661,9 @@ int main(int argc, char** argv)
 	        std::to_string(motions) + " warm-start motions each, median of " + std::to_string(repeats) +
 	        " repeats of the thread's CPU time.\n\n";
 	text += "Errors are relative to the pair's size (mean bounding radius); normal errors in radians. Our methods "
-	        "are compared over all poses with the long-double reference of the level they solve; Box2D's over the "
+	        "are compared over all poses with the long-double reference of the level they solve (a grid contact, "
+	        "one-sided, with that of the side it took, and a wrong verdict, against both sides, is a failure); "
+	        "Box2D's over the "
 	        "near-tangent and overlapping poses it reports a contact for (its point: the deepest manifold point, "
 	        "midway between the surfaces, against the midpoint of the reference points; skin included, as a Box2D "
 	        "user gets it), GJK's over the near-tangent ones (it gives no penetration, so an overlapping pose is a failure for it); a missed contact (the true shapes touch) is a failure. `× polygon8` is the time over "
