@@ -82,8 +82,8 @@ GridSide ChooseGridSide(const Shape& a, const Pose& pa, const Shape& b, const Po
 
 /// The grid method with refinement, for any shapes: on the side ChooseGridSide picks, and both
 /// ways where it picks both or where that side's answer fails a check (the rescaled particle
-/// deep in the other, the point on its corner, or a gap along the normal unlike the level's
-/// first-order gap: a line that crossed a non-convex particle far from the point).
+/// deep in the other, or a gap along the normal unlike the gap from the point to its surface:
+/// a line that crossed a non-convex particle far from the point).
 ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
 
 } // namespace b2a

@@ -461,8 +461,8 @@ ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const 
 	if (CentresCoincide(a, pa, b, pb))
 		return OverlapAxisContact(a, pa, b, pb);
 	// The grid method is one-sided (A rescaled onto B's surface). Where the rescaled particle's
-	// centre lies outside the other, one side decides (ChooseGridSide) and costs half of both:
-	// a heart–superellipse contact with the superellipse rescaled, a quarter.
+	// centre lies outside the other, one side decides (ChooseGridSide) at about half the cost of
+	// both (0.56 for two hearts; 0.45 for a heart and a superellipse, the superellipse rescaled).
 	const GridSide side = ChooseGridSide(a, pa, b, pb);
 	LevelResult ab, ba;
 	if (side != GridSide::bothWays)
