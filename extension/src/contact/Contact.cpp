@@ -422,6 +422,9 @@ bool OneSideHolds(const Shape& p, const Pose& pp, const LevelResult& level, cons
 	const double ratio = c.separation / gap;
 	return (ratio >= 0.25 && ratio <= 4.0) || std::fabs(c.separation - gap) <= 1e-9 * size;
 }
+
+// A fixed order of poses that does not depend on which particle is called A: the grid's ties.
+std::tuple<double, double, double, double> PoseOrder(const Pose& p) { return std::make_tuple(p.p.x, p.p.y, p.q.c, p.q.s); }
 } // namespace
 
 GridSide ChooseGridSide(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb)
@@ -433,7 +436,6 @@ GridSide ChooseGridSide(const Shape& a, const Pose& pa, const Shape& b, const Po
 	const double centreAInB = b.Level(ToBody(pb, pa.p)) / unitB, centreBInA = a.Level(ToBody(pa, pb.p)) / unitA;
 	const bool canA = centreAInB > 1.0 && a.Level(Vec2()) < a.SurfaceLevel();
 	const bool canB = centreBInA > 1.0 && b.Level(Vec2()) < b.SurfaceLevel();
-	auto key = [](const Pose& p) { return std::make_tuple(p.p.x, p.p.y, p.q.c, p.q.s); };
 	// The side that samples the smaller particle, where one is more than twice the other: the
 	// samples (256 of them) must be dense against the rescaled particle, or the refinement can
 	// miss a dip in its level narrower than their spacing (a heart 1e-4 the size of the other,
@@ -447,7 +449,7 @@ GridSide ChooseGridSide(const Shape& a, const Pose& pa, const Shape& b, const Po
 	else if (centreAInB != centreBInA)
 		preferA = centreAInB < centreBInA;
 	else
-		preferA = key(pa) <= key(pb);
+		preferA = PoseOrder(pa) <= PoseOrder(pb);
 	if (preferA ? canA : canB)
 		return preferA ? GridSide::aOntoB : GridSide::bOntoA;
 	if (preferA ? canB : canA)
@@ -463,37 +465,46 @@ ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const 
 	// The grid method is one-sided (A rescaled onto B's surface). Where the rescaled particle's
 	// centre lies outside the other, one side decides (ChooseGridSide) at about half the cost of
 	// both (0.56 for two hearts; 0.45 for a heart and a superellipse, the superellipse rescaled).
-	const GridSide side = ChooseGridSide(a, pa, b, pb);
+	// Each side's solve and contact (seen from A), made at most once.
 	LevelResult ab, ba;
-	if (side != GridSide::bothWays)
+	ContactResult cab, cba;
+	auto solveAB = [&] {
+		ab = SolveGridScale(a, pa, b, pb, options);
+		if (ab.Ok())
+			cab = ContactFromLevel(a, pa, b, pb, ab, ab.level <= a.SurfaceLevel(), true);
+		return ab.Ok();
+	};
+	auto solveBA = [&] {
+		ba = SolveGridScale(b, pb, a, pa, options);
+		if (ba.Ok())
+			cba = FlipContact(ContactFromLevel(b, pb, a, pa, ba, ba.level <= b.SurfaceLevel(), true));
+		return ba.Ok();
+	};
+	const GridSide side = ChooseGridSide(a, pa, b, pb);
+	if (side == GridSide::aOntoB)
 	{
-		const bool aOntoB = side == GridSide::aOntoB;
-		const Shape& p = aOntoB ? a : b;
-		const Pose& pp = aOntoB ? pa : pb;
-		LevelResult& level = aOntoB ? ab : ba;
-		level = aOntoB ? SolveGridScale(a, pa, b, pb, options) : SolveGridScale(b, pb, a, pa, options);
-		if (!level.Ok())
-			return Failed(level);
-		const double own = p.SurfaceLevel();
-		const ContactResult c = aOntoB ? ContactFromLevel(a, pa, b, pb, level, level.level <= own, true)
-		                               : ContactFromLevel(b, pb, a, pa, level, level.level <= own, true);
-		if (OneSideHolds(p, pp, level, c))
-			return aOntoB ? c : FlipContact(c);
+		if (!solveAB())
+			return Failed(ab);
+		if (OneSideHolds(a, pa, ab, cab))
+			return cab;
+	}
+	else if (side == GridSide::bOntoA)
+	{
+		if (!solveBA())
+			return Failed(ba);
+		if (OneSideHolds(b, pb, ba, cba)) // (its separation is the same either way round)
+			return cba;
 	}
 	// Each centre inside the other, or one side's answer not to be trusted alone: run it both
 	// ways. The pair overlaps exactly when either way finds a level at or below the own level (a
 	// particle inside the other shows up as the inner one's surface inside the outer one).
 	// Choosing between the two answers by a rule symmetric in A and B makes swapping A and B
 	// flip the normal and swap the points exactly.
-	if (!ab.Ok())
-		ab = SolveGridScale(a, pa, b, pb, options);
-	if (!ba.Ok())
-		ba = SolveGridScale(b, pb, a, pa, options);
-	if (!ab.Ok() || !ba.Ok())
-		return Failed(ab.Ok() ? ba : ab);
-	const bool touchAB = ab.level <= a.SurfaceLevel(), touchBA = ba.level <= b.SurfaceLevel();
-	ContactResult cab = ContactFromLevel(a, pa, b, pb, ab, touchAB, true);
-	ContactResult cba = FlipContact(ContactFromLevel(b, pb, a, pa, ba, touchBA, true));
+	if (!ab.Ok() && !solveAB())
+		return Failed(ab);
+	if (!ba.Ok() && !solveBA())
+		return Failed(ba);
+	const bool touchAB = cab.touching, touchBA = cba.touching;
 	const int iterations = ab.iterations + ba.iterations;
 	cab.iterations = cba.iterations = iterations;
 	if (touchAB != touchBA)
@@ -504,8 +515,7 @@ ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const 
 	const double tol = 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius());
 	if (cab.separation < cba.separation - tol) return cab;
 	if (cba.separation < cab.separation - tol) return cba;
-	auto key = [](const Pose& p) { return std::make_tuple(p.p.x, p.p.y, p.q.c, p.q.s); };
-	return key(pa) <= key(pb) ? cab : cba;
+	return PoseOrder(pa) <= PoseOrder(pb) ? cab : cba;
 }
 
 namespace
