@@ -47,11 +47,10 @@ answers are compared with long-double references:
 Errors, relative to the pair's size (the mean bounding radius): contact point, normal angle
 (radians) and separation. Our methods against the reference of the level they solve (the
 common level, or for the grid the one-sided level of the side it took, its verdict against
-both sides); Box2D's over the near-tangent
-and overlapping poses it reports a contact for (GJK: the near-tangent ones). failures: no answer, a non-finite one, a
-wrong verdict (the grid: the plain grid calls near-tangent touching pairs apart), or (Box2D) a contact missed where
-the shapes overlap; GJK reports no penetration, so every
-overlapping pose is a failure for it.
+both sides); Box2D's over the near-tangent and overlapping poses it reports a contact for
+(GJK: the near-tangent ones). failures: no answer, a non-finite one, a wrong verdict (the
+plain grid calls near-tangent touching pairs apart), or (Box2D) a contact missed where the
+shapes overlap; GJK reports no penetration, so every overlapping pose is a failure for it.
 
 Options: --out DIR, --seed N, --quick (under a minute), --poses N (per class and family),
 --repeats N, --families NAME,NAME (only these, e.g. ellipse_a3,superellipse_n4; each family's poses are
@@ -521,7 +520,7 @@ void Accumulate(const Answer& ans, const RefContact& ref, PoseClass cls, Convent
 // nearer answer, where it must): its errors are those against the reference of the side it
 // took, the one its points lie nearer, and its verdict is checked against both sides (the
 // pair overlaps when either does): a wrong one is a failure.
-void AccumulateOneSided(const Answer& ans, const OneSidedRefs& refs, double size, Errors& e)
+void AccumulateOneSided(const Answer& ans, const OneSidedRefs& refs, PoseClass cls, double size, Errors& e)
 {
 	if (!ans.ok || (ans.separation <= 0.0) != refs.touching)
 	{
@@ -529,8 +528,7 @@ void AccumulateOneSided(const Answer& ans, const OneSidedRefs& refs, double size
 		return;
 	}
 	auto off = [&](const RefContact& r) { return std::fmax(DistanceL(ans.pointA, r.pointA), DistanceL(ans.pointB, r.pointB)); };
-	Accumulate(ans, off(refs.aOntoB) <= off(refs.bOntoA) ? refs.aOntoB : refs.bOntoA, PoseClass::separated, Convention::oneSided,
-	           size, e);
+	Accumulate(ans, off(refs.aOntoB) <= off(refs.bOntoA) ? refs.aOntoB : refs.bOntoA, cls, Convention::oneSided, size, e);
 }
 
 struct Row
@@ -617,7 +615,7 @@ int main(int argc, char** argv)
 			{
 				const Reference& r = refs[which[i]];
 				if (m.convention == Convention::oneSided)
-					AccumulateOneSided(answers[i], r.oneSided, size, row.errors);
+					AccumulateOneSided(answers[i], r.oneSided, poses[which[i]].cls, size, row.errors);
 				else
 					Accumulate(answers[i], r.common, poses[which[i]].cls, m.convention, size, row.errors);
 			}
