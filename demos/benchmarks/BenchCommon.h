@@ -58,6 +58,43 @@ double MedianNanosecondsPerQuery(Pass&& pass, int queriesPerPass, int repeats)
 	return Median(std::move(times));
 }
 
+/// A method's time and its ratio to a baseline timed in the same repeats.
+struct PairedTiming
+{
+	double ns = 0.0;         ///< median time per query of the method
+	double baselineNs = 0.0; ///< median time per query of the baseline
+	double ratio = 0.0;      ///< median over the repeats of method time / baseline time
+};
+
+/// Times `pass` against `baseline` (each performing `queriesPerPass` queries) in alternation:
+/// every repeat runs both, one right after the other, in an order that swaps from repeat to
+/// repeat, and the ratio is the median of the repeats' own ratios. A machine whose speed drifts
+/// (another job starting, the clock stepping down) slows both passes of a repeat alike, so the
+/// ratio keeps what the medians of separately timed blocks lose. `clock` returns nanoseconds
+/// (ThreadCpuNanoseconds; a test passes its own).
+template <class Pass, class Baseline, class Clock>
+PairedTiming MedianPairedPerQuery(Pass&& pass, Baseline&& baseline, int queriesPerPass, int repeats, Clock&& clock)
+{
+	pass(); // warm-up, as in MedianNanosecondsPerQuery
+	baseline();
+	std::vector<double> times, baseTimes, ratios;
+	for (int r = 0; r < repeats; ++r)
+	{
+		double t[2] = {0.0, 0.0}; // method, baseline
+		for (int k = 0; k < 2; ++k)
+		{
+			const bool method = (k == 0) == (r % 2 == 0);
+			const double start = clock();
+			method ? pass() : baseline();
+			t[method ? 0 : 1] = (clock() - start) / queriesPerPass;
+		}
+		times.push_back(t[0]);
+		baseTimes.push_back(t[1]);
+		ratios.push_back(t[1] > 0.0 ? t[0] / t[1] : 0.0);
+	}
+	return {Median(std::move(times)), Median(std::move(baseTimes)), Median(std::move(ratios))};
+}
+
 /// A table written both as CSV (machine-readable) and as Markdown (for a reader).
 struct Table
 {

@@ -34,8 +34,9 @@ unequal and non-integer exponents, hearts) it poses pairs from a fixed seed: sep
 (gaps of 2% to 50% of the size), near-tangent (gap below 1e-12 of the size) and overlapping
 (1% to 25% of the size), and from each a sequence of small motions for warm starts. Every
 method is timed over the same poses (median of repeats, nanoseconds of thread CPU time per
-query, so that other work on the machine does not inflate it) and its
-answers are compared with long-double references:
+query, so that other work on the machine does not inflate it), in alternation with Box2D's
+8-gons on those poses for its ratio to them, and its answers are compared with long-double
+references:
   newton_cold, newton_warm  Newton on the common level (warm: carried along the motions)
   auto, auto_warm           the automatic path the Box2D adapter uses
   grid_<N>                  the paper's grid method with N samples, not refined
@@ -535,6 +536,7 @@ struct Row
 {
 	std::string family, method;
 	double ns = 0.0;
+	double ratio = std::nan(""); // time over box2d_polygon8's on the same poses (NaN: no 8-gon baseline)
 	Errors errors;
 	int queries = 0;
 };
@@ -602,7 +604,12 @@ int main(int argc, char** argv)
 		}
 
 		progress.Report((fi + 0.5) / families.size(), f.name + ": timing");
-		for (const Method& m : Methods(f))
+		const std::vector<Method> methods = Methods(f);
+		const Method* polygon8 = nullptr;
+		for (const Method& m : methods)
+			if (m.name == "box2d_polygon8")
+				polygon8 = &m;
+		for (const Method& m : methods)
 		{
 			const std::vector<int>& which = m.warm ? moved : base;
 			std::vector<Answer> answers(which.size());
@@ -619,7 +626,23 @@ int main(int argc, char** argv)
 				else
 					Accumulate(answers[i], r.common, poses[which[i]].cls, m.convention, size, row.errors);
 			}
-			row.ns = MedianNanosecondsPerQuery([&] { m.run(f, poses, which, nullptr); }, int(which.size()), repeats);
+			// Each method against the 8-gons on its own poses (a warm row's are the motions), the
+			// two timed in alternation (MedianPairedPerQuery), so that the ratio, the target's
+			// measure, does not take the machine's drift between rows.
+			const auto pass = [&] { m.run(f, poses, which, nullptr); };
+			if (polygon8 && &m != polygon8)
+			{
+				const PairedTiming t = MedianPairedPerQuery(
+					pass, [&] { polygon8->run(f, poses, which, nullptr); }, int(which.size()), repeats, ThreadCpuNanoseconds);
+				row.ns = t.ns;
+				row.ratio = t.ratio;
+			}
+			else
+			{
+				row.ns = MedianNanosecondsPerQuery(pass, int(which.size()), repeats);
+				if (polygon8)
+					row.ratio = 1.0;
+			}
 			rows.push_back(row);
 		}
 		std::fprintf(stderr, "b2a_bench_pairs: %s done (%zu poses)\n", f.name.c_str(), poses.size());
@@ -628,14 +651,10 @@ int main(int argc, char** argv)
 	// Output: CSV, Markdown with ratios to box2d_polygon8, one plot per family.
 	Table csv;
 	csv.columns = {"pair", "method", "ns_per_query", "max_point_error", "max_normal_error", "max_separation_error",
-	               "failures", "queries", "compared"};
+	               "failures", "queries", "compared", "x_polygon8"};
 	Table md;
 	md.columns = {"pair", "method", "ns/query", "× polygon8", "point error", "normal error", "separation error",
 	              "failures"};
-	std::map<std::string, double> polygon8;
-	for (const Row& r : rows)
-		if (r.method == "box2d_polygon8")
-			polygon8[r.family] = r.ns;
 	for (const Row& r : rows)
 	{
 		// No answer to compare (every contact missed): the errors are unknown, not zero.
@@ -643,10 +662,10 @@ int main(int argc, char** argv)
 		auto error = [none](double e, int digits) { return none ? std::string("n/a") : bench::FormatNumber(e, digits); };
 		csv.rows.push_back({r.family, r.method, bench::FormatNumber(r.ns), error(r.errors.point, 3),
 		                    error(r.errors.normal, 3), error(r.errors.separation, 3),
-		                    std::to_string(r.errors.failures), std::to_string(r.queries), std::to_string(r.errors.compared)});
-		const auto p8 = polygon8.find(r.family);
+		                    std::to_string(r.errors.failures), std::to_string(r.queries), std::to_string(r.errors.compared),
+		                    std::isnan(r.ratio) ? "" : bench::FormatNumber(r.ratio)});
 		md.rows.push_back({r.family, r.method, bench::FormatNumber(r.ns, 3),
-		                   p8 == polygon8.end() ? "–" : bench::FormatNumber(r.ns / p8->second, 3),
+		                   std::isnan(r.ratio) ? "–" : bench::FormatNumber(r.ratio, 3),
 		                   error(r.errors.point, 2), error(r.errors.normal, 2), error(r.errors.separation, 2),
 		                   std::to_string(r.errors.failures) + "/" + std::to_string(r.queries)});
 	}
@@ -665,7 +684,9 @@ int main(int argc, char** argv)
 	        "near-tangent and overlapping poses it reports a contact for (its point: the deepest manifold point, "
 	        "midway between the surfaces, against the midpoint of the reference points; skin included, as a Box2D "
 	        "user gets it), GJK's over the near-tangent ones (it gives no penetration, so an overlapping pose is a failure for it); a missed contact (the true shapes touch) is a failure. `× polygon8` is the time over "
-	        "`box2d_polygon8` (b2CollidePolygons on inscribed 8-gons) for the same poses.\n\n";
+	        "`box2d_polygon8`'s (b2CollidePolygons on inscribed 8-gons) on the same poses (a warm row's: the motions), "
+	        "the two timed in alternation, one right after the other in every repeat: the median of the repeats' "
+	        "ratios, so that the machine's drift between rows cancels.\n\n";
 	text += md.Markdown();
 	WriteText(opt.out + "/pairs.md", text);
 
@@ -705,11 +726,10 @@ int main(int argc, char** argv)
 	const Row* e = find(first, "auto_warm");
 	if (!e)
 		e = find(first, "auto");
-	const Row* p = find(first, "box2d_polygon8");
 	std::printf("b2a_bench_pairs: %zu rows, %zu families in %.1f s; %s %s %.0f ns", rows.size(), families.size(),
 	            progress.Elapsed(), first.c_str(), e ? e->method.c_str() : "-", e ? e->ns : 0.0);
-	if (e && p)
-		std::printf(" (%.2f x polygon8)", e->ns / p->ns);
+	if (e && !std::isnan(e->ratio))
+		std::printf(" (%.2f x polygon8)", e->ratio);
 	std::printf(", point error %.1e -> %s/pairs.md\n", e ? e->errors.point : 0.0, opt.out.c_str());
 	return 0;
 }

@@ -54,6 +54,16 @@ TEST_CASE("b2a_bench_pairs: ellipse and heart pairs, every method timed and chec
 			CHECK(CsvNumber(r, "max_normal_error") < 1e-7);
 			CHECK(CsvNumber(r, "max_separation_error") < 1e-8);
 		}
+		// The ratio to the 8-gons, timed alongside on the same poses: positive for a convex
+		// pair's rows (1 for the 8-gons themselves), empty for hearts (no convex polygon).
+		if (r.at("pair") == "ellipse_a3")
+		{
+			CHECK(CsvNumber(r, "x_polygon8") > 0.0);
+			if (m == "box2d_polygon8")
+				CHECK(CsvNumber(r, "x_polygon8") == 1.0);
+		}
+		else
+			CHECK(r.at("x_polygon8").empty());
 		if (m == "grid_64")
 			CHECK(CsvNumber(r, "max_point_error") > 1e-4); // the paper's plain grid: off by about a sample spacing
 		if (m == "box2d_gjk8" && r.at("max_point_error") != "n/a")

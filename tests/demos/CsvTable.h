@@ -16,14 +16,14 @@ namespace b2a::test
 /// One CSV row, cells by column name.
 using CsvRow = std::map<std::string, std::string>;
 
-/// The cells of one CSV line.
+/// The cells of one CSV line; an empty last cell ("a,b,") counts (getline alone would drop it).
 inline std::vector<std::string> SplitCsvLine(const std::string& line)
 {
 	std::vector<std::string> cells;
-	std::stringstream in(line);
-	std::string cell;
-	while (std::getline(in, cell, ','))
-		cells.push_back(cell);
+	size_t start = 0;
+	for (size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
+		cells.push_back(line.substr(start, comma - start));
+	cells.push_back(line.substr(start));
 	return cells;
 }
 
