@@ -139,39 +139,18 @@ bool CentreLineStart(const PairInA& p, double& t)
 	return true; // a start, not an answer: the bracket is narrow by now
 }
 
-// |t|^{1/e} with t's sign: a cube root where e = 3 (n = 4), pow otherwise.
-inline double SignedRoot(double t, double e)
-{
-	const double r = e == 3.0 ? CubeRoot(std::fabs(t)) : std::pow(std::fabs(t), 1.0 / e);
-	return std::copysign(r, t);
-}
-
-// The point of the superellipse farthest along body direction d (its support point). It
-// maximises a·dx·u + b·dy·v on |u|^n + |v|^m = 1, where the multiplier rule gives
-// u ∝ sgn(a·dx)|a·dx|^{1/(n−1)} and v ∝ sgn(b·dy)|b·dy|^{1/(m−1)}; the point is then scaled onto
-// the surface by F^{−1/n}, F = |u|^n + |v|^m, exact for n = m (the proportionality constants are
-// equal there) and a nearby point otherwise, which is all a start needs.
-Vec2 SupportPoint(const SuperellipseTerms& k, Vec2 d)
-{
-	const double a = 1.0 / k.invA, b = 1.0 / k.invB;
-	const double u = SignedRoot(a * d.x, k.n - 1.0), v = SignedRoot(b * d.y, k.m - 1.0);
-	const double scale = 1.0 / RootOf(PowAbs(u, k.n, k.nInt) + PowAbs(v, k.m, k.mInt), std::max(k.n, k.m));
-	return Vec2(a * u * scale, b * v * scale);
-}
-
 // The cold start of blocky pairs (Blocky: one exponent n ≥ 3 throughout): the contact of the
-// bounding boxes.
-// Scaled about their centres by s, two boxes touch where s first reaches the largest, over the
+// bounding boxes. Scaled about their centres by s, two boxes touch where s first reaches the largest, over the
 // four face normals u of the two boxes, of |c·u| / (hA(u) + hB(u)), h the box's half-width along
 // u (the separating-axis test, solved for the scale). If u is a face normal of A, B's point that
-// touches it is B's support point against u, scaled by s about B's centre, and the other way
-// round for a face of B. Blocky superellipses are nearly their boxes, and a corner meeting a
+// touches it is B's support point against u (SuperellipseShape::Support, exact for n = m),
+// scaled by s about B's centre, and the other way round for a face of B. Blocky superellipses are nearly their boxes, and a corner meeting a
 // face is the common contact: from there Newton needs 3.9 iterations for n = 8 over 600 random
 // poses where the centre-line start needs 5.4 (n = 4: 4.2 against 4.9, n = 12: 3.7 against 5.7).
 // For rounder shapes, an ellipse among them, the centre line is the better start (n = 4 against
 // an ellipse: 4.8 against 4.5 iterations), and for unequal exponents it is no worse (n = 4
 // against n = 8, at random centre distances: 5.1 against 5.0; n = 8 against 3: 5.2 against 5.0).
-bool BoxStart(const PairInA& p, Vec2& xi)
+bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double size, const PairInA& p, Vec2& xi)
 {
 	const double aA = 1.0 / p.a.invA, bA = 1.0 / p.a.invB, aB = 1.0 / p.b.invA, bB = 1.0 / p.b.invB;
 	const Vec2 bx(p.r.c, p.r.s), by(-p.r.s, p.r.c);
@@ -190,7 +169,8 @@ bool BoxStart(const PairInA& p, Vec2& xi)
 		}
 	}
 	const Vec2 u = Dot(p.c, axes[face]) < 0.0 ? -axes[face] : axes[face]; // from A towards B
-	xi = face < 2 ? p.c + scale * Rotate(p.r, SupportPoint(p.b, InvRotate(p.r, -u))) : scale * SupportPoint(p.a, u);
+	const double k = scale / size; // the support points are in body units, ξ in the pair's
+	xi = face < 2 ? p.c + k * Rotate(p.r, b.Support(InvRotate(p.r, -u))) : k * a.Support(u);
 	return scale > 0.0 && IsFinite(xi);
 }
 
@@ -250,7 +230,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	else
 	{
 		double t = 0.5;
-		if (!(Blocky(p) && BoxStart(p, xi)))
+		if (!(Blocky(p) && BoxStart(a, b, size, p, xi)))
 		{
 			if (!CentreLineStart(p, t))
 			{
