@@ -272,3 +272,34 @@ TEST_CASE("surface samples: each run's disc encloses its stretch of the curve")
 		}
 	}
 }
+
+TEST_CASE("surface samples: each group's disc encloses its runs' discs")
+{
+	// The grid method skips a whole group of runs when A's level is provably high over the
+	// group's disc, so that disc must hold each of its runs' discs (and so their curve).
+	for (const ShapeCase& c : AllShapeKinds())
+	{
+		CAPTURE(c.name);
+		for (int count : kCounts)
+		{
+			CAPTURE(count);
+			const auto smp = c.shape->Samples(count);
+			const int runs = int(smp->runCentre.size()), G = SurfaceSamples::kGroupRuns;
+			REQUIRE(int(smp->groupCentre.size()) == (runs + G - 1) / G);
+			REQUIRE(smp->groupRadius.size() == smp->groupCentre.size());
+			double widest = 0.0; // the group discs are no larger than their runs need
+			for (size_t group = 0; group < smp->groupCentre.size(); ++group)
+			{
+				double reach = 0.0;
+				for (int g = int(group) * G; g < std::min(int(group + 1) * G, runs); ++g)
+				{
+					const double r = Distance(smp->groupCentre[group], smp->runCentre[size_t(g)]) + smp->runRadius[size_t(g)];
+					CHECK(r <= smp->groupRadius[group] * (1.0 + 1e-15));
+					reach = std::max(reach, r);
+				}
+				widest = std::max(widest, smp->groupRadius[group] / reach);
+			}
+			CHECK(widest <= 1.0 + 1e-15);
+		}
+	}
+}

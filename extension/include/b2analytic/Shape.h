@@ -85,8 +85,15 @@ struct SurfaceSamples
 	/// where a lower bound of A's level over its disc exceeds a level it has already found.
 	std::vector<Vec2> runCentre;
 	std::vector<double> runRadius; ///< radius of each run's disc
+	/// Discs enclosing groups of runs: group G holds runs G·kGroupRuns … (G+1)·kGroupRuns − 1
+	/// (the last group may hold fewer) and its disc encloses theirs. The grid method bounds the
+	/// groups first and a run's own disc only where its group's bound does not rule it out.
+	std::vector<Vec2> groupCentre;
+	std::vector<double> groupRadius; ///< radius of each group's disc
 	/// Arcs per run.
 	static constexpr int kRunLength = 8;
+	/// Runs per group.
+	static constexpr int kGroupRuns = 4;
 
 	/// Number of samples.
 	int Count() const { return int(point.size()); }

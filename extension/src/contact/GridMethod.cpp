@@ -232,7 +232,7 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 // SolveGridScale's work arrays, one set per thread.
 struct GridScratch
 {
-	std::vector<double> value, bound;
+	std::vector<double> value, bound, groupBound;
 	std::vector<Vec2> inA;
 	std::vector<std::uint32_t> stamp; // value[k] is this call's where stamp[k] == generation
 	std::uint32_t generation = 0;
@@ -289,24 +289,57 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	scanned.assign(runs, 0);
 	bool ok = true;
 	bool bounded = ownLevel && int(samples->runCentre.size()) == runs;
+	// Groups of runs are bounded first (their discs enclose their runs'), and a run's own disc
+	// only where its group's bound does not already rule it out: about half the bounds of a
+	// heart contact, which were a sixth of its time.
+	const int groups = (runs + SurfaceSamples::kGroupRuns - 1) / SurfaceSamples::kGroupRuns;
+	bool grouped = bounded && int(samples->groupCentre.size()) == groups;
 	std::vector<double>& bound = scratch.bound;
-	if (bounded)
+	std::vector<double>& groupBound = scratch.groupBound;
+	const double noBound = -std::numeric_limits<double>::infinity();
+	if (grouped)
 	{
+		groupBound.resize(groups);
+		for (int G = 0; G < groups && grouped; ++G)
+		{
+			groupBound[G] = a.LevelLowerBound(ToWorld(walk.bInA, samples->groupCentre[G]), samples->groupRadius[G]);
+			grouped = groupBound[G] > noBound; // else bound every run
+		}
+	}
+	if (bounded)
 		bound.resize(runs);
+	if (bounded && !grouped)
+	{
 		for (int g = 0; g < runs && bounded; ++g)
 		{
 			bound[g] = a.LevelLowerBound(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]);
-			bounded = bound[g] > -std::numeric_limits<double>::infinity(); // else no bound: scan everything
+			bounded = bound[g] > noBound; // else no bound: scan everything
 		}
 	}
+	// Group G's runs: their bounds, each at least the group's (a run's disc lies in its group's),
+	// so that a run without a bound of its own keeps the group's.
+	auto groupRuns = [&](int G, int& first, int& last) {
+		first = G * SurfaceSamples::kGroupRuns;
+		last = std::min(first + SurfaceSamples::kGroupRuns, runs);
+	};
+	auto boundRuns = [&](int G) {
+		int first, last;
+		groupRuns(G, first, last);
+		for (int g = first; g < last; ++g)
+		{
+			const double own = a.LevelLowerBound(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]);
+			bound[g] = own > groupBound[G] ? own : groupBound[G];
+		}
+	};
 	if (bounded)
 	{
 		// Branch and bound over runs: runs in the order of A's lower bound over their discs,
 		// each evaluated whole, until a run's bound exceeds the lowest level found so far. The
 		// skipped runs cannot hold anything lower (the bound covers the curve between the
 		// samples too), so the minima refined below are those of the full scan. The run of the
-		// lowest bound goes first; only the runs whose bound is below the level found there are
-		// sorted (sorting all of them was a tenth of a heart contact).
+		// lowest bound (of the group of the lowest bound, when grouped) goes first; only the
+		// runs whose bound is below the level found there are sorted (sorting all of them was a
+		// tenth of a heart contact), and only the groups whose bound is below it are opened.
 		double lowest = std::numeric_limits<double>::infinity();
 		scratch.scannedRuns.clear();
 		auto scan = [&](int g) {
@@ -324,13 +357,41 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				}
 			}
 		};
-		const int best = int(std::min_element(bound.begin(), bound.end()) - bound.begin());
+		int best = 0, bestGroup = -1;
+		if (grouped)
+		{
+			bestGroup = int(std::min_element(groupBound.begin(), groupBound.end()) - groupBound.begin());
+			boundRuns(bestGroup);
+			int first, last;
+			groupRuns(bestGroup, first, last);
+			best = int(std::min_element(bound.begin() + first, bound.begin() + last) - bound.begin());
+		}
+		else
+			best = int(std::min_element(bound.begin(), bound.end()) - bound.begin());
 		scan(best);
 		std::vector<std::pair<double, int>>& order = scratch.order;
 		order.clear();
-		for (int g = 0; g < runs; ++g)
-			if (g != best && bound[g] <= lowest)
-				order.emplace_back(bound[g], g);
+		if (grouped)
+		{
+			for (int G = 0; G < groups; ++G)
+			{
+				if (!(groupBound[G] <= lowest))
+					continue;
+				if (G != bestGroup)
+					boundRuns(G);
+				int first, last;
+				groupRuns(G, first, last);
+				for (int g = first; g < last; ++g)
+					if (g != best && bound[g] <= lowest)
+						order.emplace_back(bound[g], g);
+			}
+		}
+		else
+		{
+			for (int g = 0; g < runs; ++g)
+				if (g != best && bound[g] <= lowest)
+					order.emplace_back(bound[g], g);
+		}
 		std::sort(order.begin(), order.end());
 		for (const auto& [runBound, g] : order)
 		{

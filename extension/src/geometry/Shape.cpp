@@ -370,6 +370,27 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 		out->runCentre.push_back(centre);
 		out->runRadius.push_back(radius + 2.0 * out->maxDeviation);
 	}
+	// 5. Group discs: the centre of the box of the group's run discs, the radius reaching the
+	//    farthest edge of any of them.
+	const int runs = int(out->runCentre.size());
+	for (int first = 0; first < runs; first += SurfaceSamples::kGroupRuns)
+	{
+		const int last = std::min(first + SurfaceSamples::kGroupRuns, runs);
+		Vec2 lower = out->runCentre[first], upper = lower;
+		for (int g = first; g < last; ++g)
+		{
+			const Vec2 c = out->runCentre[g];
+			const double r = out->runRadius[g];
+			lower = Vec2(std::min(lower.x, c.x - r), std::min(lower.y, c.y - r));
+			upper = Vec2(std::max(upper.x, c.x + r), std::max(upper.y, c.y + r));
+		}
+		const Vec2 centre = 0.5 * (lower + upper);
+		double radius = 0.0;
+		for (int g = first; g < last; ++g)
+			radius = std::max(radius, Distance(centre, out->runCentre[g]) + out->runRadius[g]);
+		out->groupCentre.push_back(centre);
+		out->groupRadius.push_back(radius);
+	}
 	m_samples.emplace_back(count, out);
 	return out;
 }
