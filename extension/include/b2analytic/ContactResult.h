@@ -86,14 +86,24 @@ struct ContactResult
 /// A previous solution to start Newton from (warm start across time steps). `localPoint` is the
 /// touching point in A's body frame, so it follows A when both particles move together;
 /// `localPointB`, the same point in B's frame, lets a solver predict where the point went when B
-/// moved relative to A.
+/// moved relative to A. Where a solver records the slide, the point's first-order motion along
+/// the level curves when B moves relative to A (from the curvatures of the two shapes' level
+/// curves there), the next start follows the point also as it rolls. The slide is a hint for the
+/// start only, kept in float so that a Box2D contact carrying it still fits Box2D's largest
+/// allocator block.
 struct WarmStart
 {
-	bool valid = false;      ///< false: start from the geometric guess
-	Vec2 localPoint;         ///< previous touching point in A's body frame
-	double multiplier = 1.0; ///< previous LevelResult::multiplier
-	bool hasPointB = false;  ///< localPointB is set (solvers that do not record it clear this)
-	Vec2 localPointB;        ///< previous touching point in B's body frame
+	Vec2 localPoint;                 ///< previous touching point in A's body frame
+	Vec2 localPointB;                ///< previous touching point in B's body frame
+	double multiplier = 1.0;         ///< previous LevelResult::multiplier
+	float normalA[2] = {0.0f, 0.0f}; ///< previous normal n (A's outward unit normal there) in A's body frame
+	float normalB[2] = {0.0f, 0.0f}; ///< the same normal in B's body frame (turned with B, it shows B's turn relative to A since)
+	/// ∂s/∂(ω, v·t, v·n): the point's move s along t = Perp(n) per turn ω of B relative to A
+	/// (a length) and per move v of B's material point at the point (along t and along n).
+	float slide[3] = {0.0f, 0.0f, 0.0f};
+	bool valid = false;              ///< false: start from the geometric guess
+	bool hasPointB = false;          ///< localPointB is set (solvers that do not record it clear this)
+	bool hasSlide = false;           ///< normalA, normalB and slide are set (solvers that do not record them clear this)
 };
 
 /// Tuning of the solvers; the defaults suit every use in the library.

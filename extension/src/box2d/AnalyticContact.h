@@ -60,20 +60,21 @@ private:
 		double skin = 0.0;            // the proxy polygon's skin (b2_polygonRadius)
 	};
 
+	// The small members first, packed together: the contact must fit Box2D's largest block.
 	Kind m_kind;
+	bool m_hasNormal = false;    // m_lastNormal is set
+	bool m_wasTouching = false;  // the last solve found the analytic pair touching (then no separating-axis tests)
+	bool m_prepared = false;     // m_preparedManifold holds a manifold computed ahead of the step (Prepare)
 	Side m_sideA, m_sideB;
 	double m_patchTolerance = 0.0, m_patchMinWidth = 0.0; // the analytic sides' (the smaller of two)
 	SolverOptions m_solver;                                // A's, where A is analytic
 	WarmStart m_warm;       // Newton's previous solution (analytic pairs)
 	Vec2 m_lastNormal;      // previous normal, world (a guess against polygons, a separating axis to try between analytic particles)
-	bool m_hasNormal = false;
-	bool m_wasTouching = false; // the last solve found the analytic pair touching (then no separating-axis tests)
 	// Box2D frees contacts without running their destructors when a world is destroyed, so
 	// every member here must be trivially destructible: the circle is borrowed from a cache.
 	const Shape* m_circle = nullptr; // the analytic circle standing in for a Box2D circle fixture
 	ManifoldCache m_patch;  // where last step's flat patch ended
 	// A manifold computed ahead of the step (Prepare) and the transforms it belongs to.
-	bool m_prepared = false;
 	b2Transform m_preparedA, m_preparedB;
 	b2Manifold m_preparedManifold;
 };

@@ -25,6 +25,7 @@ inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, con
 		return;
 	warm->valid = level.Ok() && level.multiplier > 0.0;
 	warm->hasPointB = warm->valid;
+	warm->hasSlide = false;
 	if (!warm->valid)
 		return;
 	warm->localPoint = ToBody(pa, level.point);
@@ -65,6 +66,9 @@ struct SuperellipsePairPoint
 	Vec2 gradB;           ///< ∇λB there
 	double levelA = 0.0;  ///< λA there
 	double levelB = 0.0;  ///< λB there
+	Vec2 normalA;         ///< A's outward unit normal there, in A's body frame
+	double slide[3] = {0.0, 0.0, 0.0}; ///< WarmStart::slide (world units)
+	bool hasSlide = false; ///< slide is set (the level curves' curvatures are not both near zero)
 	bool valid = false;   ///< false: compute them as ContactFromLevel does
 };
 /// Common level of two smooth superellipses (AsSmoothSuperellipse) by the generic Newton's
