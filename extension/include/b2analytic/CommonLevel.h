@@ -14,10 +14,11 @@ namespace b2a
 /// solution is the paper's, with better conditioning; the frame is normalised to the pair's
 /// size. μ = e^ν keeps the multiplier positive, and before each step μ is reset to its
 /// least-squares value at the current point when that lowers the residual. The Jacobian is
-/// analytic and solved with Eigen's full-pivot LU; a reciprocal condition number below 1e-14
-/// stops the solve as singular. Steps are limited (trust region of half the pair's size,
-/// |Δν| ≤ 2) and damped by a backtracking line search on the row-weighted residual. Starts from
-/// `warm` when given, else from the point between the centres where ψA = ψB. Both shapes must be
+/// analytic and solved through its adjugate, with its exact condition number: a reciprocal
+/// condition number below 1e-14 stops the solve as singular. Steps are limited (trust region of
+/// half the pair's size, |Δν| ≤ 2) and damped by a backtracking line search on the row-weighted
+/// residual. Starts from `warm` when given (its point moved with both bodies and by its slide
+/// where recorded, WarmStart), else from the point between the centres where ψA = ψB. Both shapes must be
 /// smooth and strictly convex (IsSmoothConvex). No fallback here; `level` is C in own-level units
 /// (C ≤ 1 ⇔ touching; the superellipse family's own level is 1).
 LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,

@@ -2,6 +2,7 @@
 #include "b2analytic/CommonLevel.h"
 
 #include "contact/SolverCore.h"
+#include "contact/WarmSlide.h"
 #include "numerics/RootFinding.h"
 #include "numerics/SmallLinear.h"
 
@@ -60,8 +61,10 @@ void Evaluate(const PairFrame& f, Vec2 xi, double m, NewtonPoint& p)
 }
 } // namespace
 
-LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions& options)
+LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions& options, LevelSlide* slide)
 {
+	if (slide)
+		slide->valid = false;
 	LevelResult result;
 	result.method = SolveMethod::newton;
 	const double trust = std::max(0.5, 0.5 * Length(f.Xi(f.b.pose.p) - f.Xi(f.a.pose.p)));
@@ -204,6 +207,8 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 	result.point = f.World(p.xi);
 	result.normal = Normalize(p.A.grad);
 	result.multiplier = p.mu;
+	if (slide) // ξ has the world's axes in units of the frame's scale
+		ComputeSlide(p.A.grad, p.A.hess, p.B.grad, p.B.hess, result.normal, p.mu, f.scale, Rot(), *slide);
 	return result;
 }
 
@@ -248,6 +253,14 @@ bool GeometricStart(const PairFrame& f, Vec2& xi, double& mu)
 LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                                    const SolverOptions& options, const WarmStart* warm)
 {
+	return SolveCommonLevelNewton(a, pa, b, pb, options, warm, nullptr);
+}
+
+LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                                   const WarmStart* warm, LevelSlide* slide)
+{
+	if (slide)
+		slide->valid = false;
 	LevelResult result;
 	if (!NewtonApplies(a, b, result))
 		return result;
@@ -256,7 +269,8 @@ LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& 
 	double mu = 1.0;
 	if (warm && warm->valid && warm->multiplier > 0.0 && IsFinite(warm->localPoint))
 	{
-		xi = f.Xi(ToWorld(pa, warm->localPoint));
+		// Where the point went with both bodies' motions and the slide along the surfaces.
+		xi = f.Xi(ToWorld(pa, WarmStartPoint(*warm, pa, pb, f.scale)));
 		mu = warm->multiplier;
 	}
 	else if (!GeometricStart(f, xi, mu))
@@ -264,7 +278,7 @@ LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& 
 		result.failure = "coincident centres: no common-level point between them";
 		return result;
 	}
-	return RunNewton(f, xi, std::log(mu), options);
+	return RunNewton(f, xi, std::log(mu), options, slide);
 }
 
 } // namespace b2a

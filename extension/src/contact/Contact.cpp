@@ -296,21 +296,6 @@ namespace
 // shapes, with direct calls on the final class): X itself when it lies on the surface, else the
 // far crossing, in closed form for an ellipse and by Newton otherwise, whose first step starts
 // from `known` = {λ(X), ∇λ(X)·dir} where the caller has them. False where the line misses.
-// The warm start's slide from the superellipse solve's answer (WarmStart::hasSlide), in float.
-void RecordSlide(WarmStart* warm, const Pose& pa, const Pose& pb, const SuperellipsePairPoint& at)
-{
-	if (!warm || !warm->valid || !at.hasSlide)
-		return;
-	const Vec2 nB = InvRotate(pb.q, Rotate(pa.q, at.normalA));
-	warm->normalA[0] = float(at.normalA.x);
-	warm->normalA[1] = float(at.normalA.y);
-	warm->normalB[0] = float(nB.x);
-	warm->normalB[1] = float(nB.y);
-	for (int i = 0; i < 3; ++i)
-		warm->slide[i] = float(at.slide[i]);
-	warm->hasSlide = std::isfinite(warm->slide[0] + warm->slide[1] + warm->slide[2]);
-}
-
 bool SuperellipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 dir, const double* known, Vec2& point)
 {
 	const Vec2 x = ToBody(p, X);
@@ -377,7 +362,7 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 	if (!level.Ok() || !at.valid)
 		return ConvexContact(a, pa, b, pb, options, warm);
 	RecordWarmStart(warm, pa, pb, level);
-	RecordSlide(warm, pa, pb, at);
+	RecordSlide(warm, pa, pb, at.slide);
 	ContactResult c = ContactOfLevel(level);
 	// ContactNormal's mean of the unit normals (they are opposed: the solve checked).
 	c.normal = Normalize(Normalize(at.gradA) - Normalize(at.gradB));

@@ -68,12 +68,14 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 		return NonFinitePoseFailure<LevelResult>();
 	}
 	LevelResult r;
+	LevelSlide slide; // Newton's, for the next warm start
+	LevelSlide* keep = warm ? &slide : nullptr;
 	const bool smooth = a.IsSmoothConvex() && b.IsSmoothConvex();
 	const bool convex = a.IsConvex() && b.IsConvex();
 	switch (method)
 	{
 	case MethodChoice::newton:
-		r = SolveCommonLevelNewton(a, pa, b, pb, options, warm);
+		r = SolveCommonLevelNewton(a, pa, b, pb, options, warm, keep);
 		break;
 	case MethodChoice::grid:
 		if (!convex)
@@ -97,11 +99,12 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 		}
 		else if (smooth)
 		{
-			r = SolveCommonLevelNewton(a, pa, b, pb, options, warm);
+			r = SolveCommonLevelNewton(a, pa, b, pb, options, warm, keep);
 			if (!r.Ok() && warm && warm->valid)
-				r = SolveCommonLevelNewton(a, pa, b, pb, options, nullptr);
+				r = SolveCommonLevelNewton(a, pa, b, pb, options, nullptr, keep);
 			if (!r.Ok())
 			{
+				slide.valid = false;
 				const int spent = r.iterations;
 				r = SolveCommonLevelMinMax(a, pa, b, pb, options);
 				r.iterations += spent;
@@ -121,6 +124,8 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 	}
 	r = CheckedResult(r);
 	RecordWarmStart(warm, pa, pb, r);
+	if (r.method == SolveMethod::newton)
+		RecordSlide(warm, pa, pb, slide);
 	return r;
 }
 

@@ -33,6 +33,17 @@ inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, con
 	warm->multiplier = level.multiplier;
 }
 
+/// A common-level answer's slide (WarmStart::slide), where the solver computed one (computed
+/// and used by WarmSlide.h).
+struct LevelSlide
+{
+	Vec2 normal;                                ///< A's outward unit normal at the point (world)
+	double coefficients[3] = {0.0, 0.0, 0.0};   ///< WarmStart::slide (world lengths)
+	bool valid = false;                         ///< false: none (flat on flat, or not computed)
+};
+/// Writes a solve's slide into the warm start that RecordWarmStart has just filled (which
+/// cleared it); nothing where the slide is invalid.
+void RecordSlide(WarmStart* warm, const Pose& pa, const Pose& pb, const LevelSlide& slide);
 class SuperellipseShape;
 /// The shape as a plain ellipse or circle (n = m = 2, level f or f^1), else null.
 const SuperellipseShape* AsPlainEllipse(const Shape& s);
@@ -66,9 +77,7 @@ struct SuperellipsePairPoint
 	Vec2 gradB;           ///< ∇λB there
 	double levelA = 0.0;  ///< λA there
 	double levelB = 0.0;  ///< λB there
-	Vec2 normalA;         ///< A's outward unit normal there, in A's body frame
-	double slide[3] = {0.0, 0.0, 0.0}; ///< WarmStart::slide (world units)
-	bool hasSlide = false; ///< slide is set (the level curves' curvatures are not both near zero)
+	LevelSlide slide;     ///< the answer's slide (computed only where the caller keeps a warm start)
 	bool valid = false;   ///< false: compute them as ContactFromLevel does
 };
 /// Common level of two smooth superellipses (AsSmoothSuperellipse) by the generic Newton's
@@ -79,7 +88,11 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
                                        SuperellipsePairPoint* at = nullptr);
 
 /// Newton–Raphson on the common level from (ξ, m = log μ) in a PairFrame; `level` is λA there.
-LevelResult RunNewton(const PairFrame& frame, Vec2 xi, double m, const SolverOptions& options);
+LevelResult RunNewton(const PairFrame& frame, Vec2 xi, double m, const SolverOptions& options, LevelSlide* slide = nullptr);
+/// SolveCommonLevelNewton, warm-started with WarmStartPoint and filling `slide` (when given) for
+/// RecordSlide.
+LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                                   const WarmStart* warm, LevelSlide* slide);
 
 /// The point between the centres where ψA = ψB, and μ balancing the gradients there.
 /// Returns false when the centres coincide.

@@ -1,5 +1,6 @@
 // b2analytic: the common level of two superellipses by Newton, the levels evaluated inline.
 #include "contact/SolverCore.h"
+#include "contact/WarmSlide.h"
 
 #include "b2analytic/SuperellipseShape.h"
 #include "geometry/SuperellipseTerms.h"
@@ -174,52 +175,6 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 	return scale > 0.0 && IsFinite(xi);
 }
 
-// The slide (WarmStart::slide): where the common-level point goes, to first order, when B moves
-// relative to A by a small rigid motion. In A's frame at the point ξ, with A's outward normal n
-// and tangent t = Perp(n), let B's material point at ξ move by v and B turn by ω; the new point
-// is ξ + s·t + h·n. The unit normals of the gauges' level curves vary as dN = t·(tᵀ∇²ψ dx)/|∇ψ|
-// (t·(κ·dx·t + τ·dx·n) with the curve's curvature κ = tᵀ∇²ψ t/|∇ψ| and twist τ = tᵀ∇²ψ n/|∇ψ|,
-// for each shape). Along n the levels stay equal, ψA + |∇ψA|·h = ψB + |∇ψB|·(v·n − h), so
-// h = v·n/(1 + μ) with μ = |∇ψA|/|∇ψB| (the plain warm start's weight). Along t the normals
-// stay opposed: A's is n + (κA·s + τA·h)·t, and B's, at its material point s − v·t along t and
-// h − v·n along n, turned by ω, is −n + (κB·(s − v·t) + τB·(h − v·n) − ω)·t. So
-//   s = (ω + κB·v·t + τB·v·n − (τA + τB)·h) / (κA + κB),
-// the slide's three coefficients (in units of the pair's size). For two circles (no twist) the
-// point stays on the centre line, as it must, where the plain start v/(1 + μ) is exact only for
-// translations; for a corner on a face it follows the corner. Flat on flat (κA + κB near zero)
-// the slide is undetermined and none is recorded. Over the bench's warm motions (1e-3 of the
-// size and 1 mrad a step) it leaves the start 2e-7 from the answer where the plain one is 2e-4
-// off (medians), and a warm solve takes 2.0 Newton steps instead of 2.6 to 2.8.
-bool SlideOf(const Gauge& ga, const Gauge& gb, Vec2 n, double mu, double slide[3])
-{
-	const Vec2 t = Perp(n);
-	// ∇²ψ·t for each shape, then its components along t and n over |∇ψ|.
-	const double ax = ga.hxx * t.x + ga.hxy * t.y, ay = ga.hxy * t.x + ga.hyy * t.y;
-	const double bx = gb.hxx * t.x + gb.hxy * t.y, by = gb.hxy * t.x + gb.hyy * t.y;
-	const double invA = 1.0 / std::sqrt(ga.gx * ga.gx + ga.gy * ga.gy), invB = 1.0 / std::sqrt(gb.gx * gb.gx + gb.gy * gb.gy);
-	const double kA = (ax * t.x + ay * t.y) * invA, kB = (bx * t.x + by * t.y) * invB;
-	const double tA = (ax * n.x + ay * n.y) * invA, tB = (bx * n.x + by * n.y) * invB;
-	const double k = kA + kB, invK = 1.0 / k;
-	slide[0] = invK;
-	slide[1] = kB * invK;
-	slide[2] = (tB - (tA + tB) / (1.0 + mu)) * invK;
-	return k > 1e-6 && kA >= 0.0 && kB >= 0.0 && std::isfinite(slide[0] + slide[1] + slide[2]);
-}
-
-// The warm start moved by the recorded slide; the plain start where the predicted slide is large
-// (over a tenth of the size: the first-order model is then no better a guess).
-Vec2 SlideStart(const WarmStart& w, const Pose& pa, const Pose& pb, double size, Vec2 plain, Vec2 withB, double mu)
-{
-	const Vec2 xi = w.localPoint / size;
-	const Vec2 n(w.normalA[0], w.normalA[1]);
-	const Vec2 nowB = InvRotate(pa.q, Rotate(pb.q, Vec2(w.normalB[0], w.normalB[1]))); // B's copy of n, turned with B
-	const Vec2 t = Perp(n), v = withB - xi;
-	const double s = w.slide[0] / size * Cross(n, nowB) + w.slide[1] * Dot(v, t) + w.slide[2] * Dot(v, n);
-	if (!(std::fabs(s) <= 0.1))
-		return plain;
-	return xi + s * t + (Dot(v, n) / (1.0 + mu)) * n;
-}
-
 // Whether BoxStart is the better start for the pair: one exponent n ≥ 3 for both shapes and both
 // axes (the support points exact, the boxes alike).
 bool Blocky(const PairInA& p) { return p.a.n >= 3.0 && p.a.m == p.a.n && p.b.n == p.a.n && p.b.m == p.a.n; }
@@ -262,18 +217,9 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	double mu = 1.0;
 	if (warm && warm->valid && warm->multiplier > 0.0 && IsFinite(warm->localPoint) && std::isfinite(warm->multiplier))
 	{
+		// Where the point went with both bodies' motions and the slide along the surfaces.
 		mu = warm->multiplier;
-		xi = warm->localPoint / size;
-		if (warm->hasPointB && IsFinite(warm->localPointB))
-		{
-			// Where the point went: between where it stayed with A and where it went with B.
-			// For two circles, whose point divides the centre line in the ratio of the radii and
-			// whose multiplier is rB/rA, the weight 1/(1 + μ) of B's is exact.
-			const Vec2 withB = ToBody(pa, ToWorld(pb, warm->localPointB)) / size;
-			xi = xi + (1.0 / (1.0 + mu)) * (withB - xi);
-			if (warm->hasSlide)
-				xi = SlideStart(*warm, pa, pb, size, xi, withB, mu);
-		}
+		xi = WarmStartPoint(*warm, pa, pb, size) / size;
 	}
 	else
 	{
@@ -465,9 +411,10 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	result.multiplier = q.mu;
 	if (at)
 	{
-		at->normalA = nA;
-		at->hasSlide = warm && SlideOf(q.A, q.B, nA, q.mu, at->slide); // only a caller that keeps a warm start needs it
-		at->slide[0] *= size;
+		at->slide.valid = false;
+		if (warm) // only a caller that keeps a warm start needs it
+			ComputeSlide(Vec2(q.A.gx, q.A.gy), Sym22{q.A.hxx, q.A.hxy, q.A.hyy}, Vec2(q.B.gx, q.B.gy),
+			             Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, nA, q.mu, size, pa.q, at->slide);
 		at->gradA = Rotate(pa.q, Vec2(q.A.fx, q.A.fy)) / size;
 		at->gradB = Rotate(pa.q, Vec2(q.B.fx, q.B.fy)) / size;
 		at->levelA = q.A.lambda;
