@@ -19,6 +19,7 @@
 #include "TestSupport.h"
 #include "ContactChecks.h"
 #include "../../demos/benchmarks/PairReference.h"
+#include "contact/WarmSlide.h"
 
 #include <vector>
 
@@ -163,8 +164,9 @@ TEST_CASE("superellipse pairs: warm starts along small motions stay on the refer
 TEST_CASE("superellipse pairs: the warm start's slide is the derivative of the contact point along the motion")
 {
 	// WarmStart's documented first-order model of where the point goes when B moves relative to
-	// A: along the normal n, h = v·n/(1 + μ); along t = Perp(n), s = slide·(ω, v·t, v·n), with v
-	// the move of B's material point at the point and ω B's turn. Checked against central
+	// A, as the solvers' start (WarmStartPoint) applies it: along the normal n, h = v·n/(1 + μ);
+	// along t = Perp(n), s = slide·(ω, v·t, v·n), with v the move of B's material point at the
+	// point and ω B's turn. Checked against central
 	// differences of the long-double reference's level point over motions of 1e-5 of the size
 	// (and 1e-5 rad): translations along t and n and turns of B about its centre, one at a time.
 	// Measured: 1.5e-5 of the size per unit motion (the solve's Hessians are from its last
@@ -198,17 +200,13 @@ TEST_CASE("superellipse pairs: the warm start's slide is the derivative of the c
 				return ToBody(p.pa, Vec2(double(r.point.x), double(r.point.y)));
 			};
 			const Vec2 exact = (refPoint(moved(eps)) - refPoint(moved(-eps))) / (2.0 * eps);
-			// The model's move of the point for B at `pb`, in A's frame; its central difference
-			// cancels the offset of the float normals (a turn of about 6e-8 where B did not turn).
+			// The start the solvers take (WarmStartPoint) for B at `pb`, with the slide or the plain
+			// start without it, in A's frame; its central difference cancels the offset of the
+			// float normals (a turn of about 6e-8 where B did not turn).
+			WarmStart plainWarm = warm;
+			plainWarm.hasSlide = false;
 			auto model = [&](const Pose& pb, bool plain) {
-				const Vec2 x = warm.localPoint;
-				const Vec2 v = ToBody(p.pa, ToWorld(pb, warm.localPointB)) - x;
-				if (plain)
-					return (1.0 / (1.0 + warm.multiplier)) * v;
-				const Vec2 nowB = InvRotate(p.pa.q, Rotate(pb.q, Vec2(warm.normalB[0], warm.normalB[1])));
-				const double omega = Cross(n, nowB);
-				const double slide = warm.slide[0] * omega + warm.slide[1] * Dot(v, t) + warm.slide[2] * Dot(v, n);
-				return slide * t + (Dot(v, n) / (1.0 + warm.multiplier)) * n;
+				return WarmStartPoint(plain ? plainWarm : warm, p.pa, pb, size) - warm.localPoint;
 			};
 			const Vec2 predicted = (model(moved(eps), false) - model(moved(-eps), false)) / (2.0 * eps);
 			const Vec2 plain = (model(moved(eps), true) - model(moved(-eps), true)) / (2.0 * eps);

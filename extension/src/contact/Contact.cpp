@@ -361,8 +361,7 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 	const LevelResult level = CheckedResult(SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at));
 	if (!level.Ok() || !at.valid)
 		return ConvexContact(a, pa, b, pb, options, warm);
-	RecordWarmStart(warm, pa, pb, level);
-	RecordSlide(warm, pa, pb, at.slide);
+	RecordWarmStart(warm, pa, pb, level, &at.slide);
 	ContactResult c = ContactOfLevel(level);
 	// ContactNormal's mean of the unit normals (they are opposed: the solve checked).
 	c.normal = Normalize(Normalize(at.gradA) - Normalize(at.gradB));

@@ -104,7 +104,6 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 				r = SolveCommonLevelNewton(a, pa, b, pb, options, nullptr, keep);
 			if (!r.Ok())
 			{
-				slide.valid = false;
 				const int spent = r.iterations;
 				r = SolveCommonLevelMinMax(a, pa, b, pb, options);
 				r.iterations += spent;
@@ -123,9 +122,7 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 		}
 	}
 	r = CheckedResult(r);
-	RecordWarmStart(warm, pa, pb, r);
-	if (r.method == SolveMethod::newton)
-		RecordSlide(warm, pa, pb, slide);
+	RecordWarmStart(warm, pa, pb, r, &slide); // (valid only where Newton's answer is r)
 	return r;
 }
 

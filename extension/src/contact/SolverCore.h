@@ -17,9 +17,22 @@ inline bool NewtonApplies(const Shape& a, const Shape& b, LevelResult& failure)
 	return false;
 }
 
-/// Records a solved level as the next warm start (the point in both bodies' frames and the
-/// multiplier); a failed solve, or one without a positive multiplier, invalidates it.
-inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, const LevelResult& level)
+/// A common-level answer's slide (WarmStart::slide), where the solver computed one (computed
+/// and used by WarmSlide.h).
+struct LevelSlide
+{
+	Vec2 normal;                                ///< A's outward unit normal at the point (world)
+	double coefficients[3] = {0.0, 0.0, 0.0};   ///< WarmStart::slide (world lengths)
+	bool valid = false;                         ///< false: none (flat on flat, or not computed)
+};
+/// Writes a valid solve's slide into a warm start (RecordWarmStart's part for the slide).
+void RecordSlide(WarmStart* warm, const Pose& pa, const Pose& pb, const LevelSlide& slide);
+
+/// Records a solved level as the next warm start (the point in both bodies' frames, the
+/// multiplier, and the slide where the solver computed a valid one); a failed solve, or one
+/// without a positive multiplier, invalidates it.
+inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, const LevelResult& level,
+                            const LevelSlide* slide = nullptr)
 {
 	if (!warm)
 		return;
@@ -31,19 +44,10 @@ inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, con
 	warm->localPoint = ToBody(pa, level.point);
 	warm->localPointB = ToBody(pb, level.point);
 	warm->multiplier = level.multiplier;
+	if (slide && slide->valid)
+		RecordSlide(warm, pa, pb, *slide);
 }
 
-/// A common-level answer's slide (WarmStart::slide), where the solver computed one (computed
-/// and used by WarmSlide.h).
-struct LevelSlide
-{
-	Vec2 normal;                                ///< A's outward unit normal at the point (world)
-	double coefficients[3] = {0.0, 0.0, 0.0};   ///< WarmStart::slide (world lengths)
-	bool valid = false;                         ///< false: none (flat on flat, or not computed)
-};
-/// Writes a solve's slide into the warm start that RecordWarmStart has just filled (which
-/// cleared it); nothing where the slide is invalid.
-void RecordSlide(WarmStart* warm, const Pose& pa, const Pose& pb, const LevelSlide& slide);
 class SuperellipseShape;
 /// The shape as a plain ellipse or circle (n = m = 2, level f or f^1), else null.
 const SuperellipseShape* AsPlainEllipse(const Shape& s);

@@ -8,8 +8,6 @@ namespace b2a
 
 void RecordSlide(WarmStart* warm, const Pose& pa, const Pose& pb, const LevelSlide& slide)
 {
-	if (!warm || !warm->valid || !slide.valid)
-		return;
 	const Vec2 nA = InvRotate(pa.q, slide.normal), nB = InvRotate(pb.q, slide.normal);
 	warm->normalA[0] = float(nA.x);
 	warm->normalA[1] = float(nA.y);
