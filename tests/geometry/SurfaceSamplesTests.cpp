@@ -201,6 +201,34 @@ TEST_CASE("surface samples: computed once per count and shared, also across thre
 	CHECK(ellipse->Samples(777).get() == seen[0]);
 }
 
+TEST_CASE("surface samples: SamplesRef is Samples' object, whichever count was asked for last and on any thread")
+{
+	const auto heart = MakeHeart(0.9);
+	// Alternating counts: the kept pointer changes hands, the answer is always the count's own.
+	for (int round = 0; round < 3; ++round)
+		for (const int count : {300, Shape::kDefaultSampleCount, 64})
+		{
+			const SurfaceSamples& ref = heart->SamplesRef(count);
+			CHECK(&ref == heart->Samples(count).get());
+			CHECK(ref.Count() == count);
+		}
+	CHECK(&heart->SamplesRef() == heart->Samples().get());
+	// Threads asking for different counts at once each get their own count's samples.
+	const auto ellipse = MakeEllipse(0.4, 3.0);
+	std::vector<int> wrong(4, 0);
+	std::vector<std::thread> threads;
+	for (int t = 0; t < 4; ++t)
+		threads.emplace_back([&, t] {
+			const int count = 100 + 50 * (t % 2);
+			for (int k = 0; k < 200; ++k)
+				wrong[t] += ellipse->SamplesRef(count).Count() != count;
+		});
+	for (auto& th : threads) th.join();
+	for (int t = 0; t < 4; ++t)
+		CHECK(wrong[t] == 0);
+	CHECK(&ellipse->SamplesRef(150) == ellipse->Samples(150).get());
+}
+
 TEST_CASE("surface samples: the same whatever other shapes and counts were sampled before on the thread")
 {
 	// The dense pass is reused between counts of one shape (a fixture asks for two in a row). The

@@ -3,6 +3,7 @@
 
 #include "b2analytic/Math.h"
 
+#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -241,6 +242,11 @@ public:
 
 	/// Surface samples at the own level (count ≥ 3), computed on first use and cached.
 	std::shared_ptr<const SurfaceSamples> Samples(int count = kDefaultSampleCount) const;
+	/// The same samples by reference, valid as long as the shape: for the hot paths (the grid
+	/// method, line crossings of non-convex shapes), which then skip Samples()'s lock and the
+	/// handle's reference count once the count's samples exist (the last count asked for is
+	/// kept in an atomic pointer, so threads that share the shape do not queue on the lock).
+	const SurfaceSamples& SamplesRef(int count = kDefaultSampleCount) const;
 	/// The default number of surface samples for the grid method.
 	static constexpr int kDefaultSampleCount = 256;
 
@@ -271,6 +277,7 @@ private:
 	std::uint64_t m_serial; // unique per shape: keys the dense sampling pass reused between sample counts
 	mutable std::mutex m_sampleMutex;
 	mutable std::vector<std::pair<int, std::shared_ptr<const SurfaceSamples>>> m_samples;
+	mutable std::atomic<const SurfaceSamples*> m_lastSamples{nullptr}; // one of m_samples' (never removed)
 };
 
 /// Shared, immutable handle to a shape.

@@ -249,7 +249,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	LevelResult result;
 	result.method = SolveMethod::grid;
 	const double LB = std::isnan(levelB) ? b.SurfaceLevel() : levelB;
-	const auto samples = b.Samples(std::max(8, options.gridSamples));
+	const SurfaceSamples* samples = &b.SamplesRef(std::max(8, options.gridSamples));
 	const int n = samples->Count();
 	SurfaceWalk walk{a, b, Relative(pa, pb), LB};
 

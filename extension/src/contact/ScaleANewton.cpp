@@ -130,7 +130,7 @@ LevelResult SolveScaleANewton(const Shape& a, const Pose& pa, const Shape& b, co
 	// between them; near a thin tip the maximum is not much farther), and keep the lowest answer
 	// that is a minimum along the surface (its neighbours at ±1e-4 rad of B's polar angle are
 	// not lower). Where none is, the result says so.
-	const auto samples = b.Samples(std::max(8, options.gridSamples));
+	const SurfaceSamples* samples = &b.SamplesRef(std::max(8, options.gridSamples));
 	const int n = samples->Count();
 	const Pose bInA = Relative(pa, pb);
 	std::vector<double> level(n);

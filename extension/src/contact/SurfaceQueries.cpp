@@ -58,7 +58,7 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 	// the step, and finds a crossing pair that thin (a line clipping a heart's tip) where the
 	// plain step would step over it.
 	const double len = Length(dir);
-	const double h = std::min(sMax / 64.0, 0.5 * shape.Samples()->maxSpacing / std::max(len, 1e-300));
+	const double h = std::min(sMax / 64.0, 0.5 * shape.SamplesRef().maxSpacing / std::max(len, 1e-300));
 	const bool inside = f0 < 0.0;
 	auto middle = [&](double from, double to) { return ToBody(pose, X + (0.5 * (from + to)) * dir); };
 	auto clear = [&](double from, double to) {

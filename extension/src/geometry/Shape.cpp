@@ -251,6 +251,18 @@ void DenseSamples(const Shape& shape, int resolution, std::vector<DensePoint>& d
 }
 } // namespace
 
+const SurfaceSamples& Shape::SamplesRef(int count) const
+{
+	// Entries of m_samples are never removed, so a pointer to one stays valid with the shape.
+	// (A count whose samples number other than the count asked for always takes the lock.)
+	const SurfaceSamples* last = m_lastSamples.load(std::memory_order_acquire);
+	if (last && last->Count() == count)
+		return *last;
+	const std::shared_ptr<const SurfaceSamples> samples = Samples(count);
+	m_lastSamples.store(samples.get(), std::memory_order_release);
+	return *samples;
+}
+
 std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 {
 	if (count < 3)
