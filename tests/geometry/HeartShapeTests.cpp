@@ -18,6 +18,7 @@ TEST_CASE("heart: the level is x^2 + y^2 - cbrt(x^2 y^3) and the particle is whe
 	CHECK(heart->Describe() == "heart(alpha=1.7)");
 	CHECK(!heart->IsConvex());
 	CHECK(!heart->IsSmoothConvex());
+	CHECK(heart->DerivativesCheap()); // closed forms: line searches take Newton steps
 	Random rng(61);
 	for (int i = 0; i < 1000; ++i)
 	{

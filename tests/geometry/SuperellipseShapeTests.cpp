@@ -35,6 +35,9 @@ TEST_CASE("superellipse: family, flags and description follow the parameters")
 	CHECK(smooth->Describe() == "superellipse(a=1, b=2, n=4, m=6)");
 	CHECK(smooth->IsConvex());
 	CHECK(smooth->IsSmoothConvex());
+	CHECK(smooth->DerivativesCheap());
+	CHECK(ellipse->DerivativesCheap());
+	CHECK(SuperellipseShape::FromZeta(2.0, 1.0, 1.5)->DerivativesCheap());
 	CHECK(smooth->LevelPower() == 2.0); // min(n, m) / 2
 	CHECK(smooth->N() == 4.0);
 	CHECK(smooth->M() == 6.0);

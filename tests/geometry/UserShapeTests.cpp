@@ -25,6 +25,7 @@ TEST_CASE("user shape: the heart written as G(x, L) matches the built-in HeartSh
 	CHECK(user->SurfaceLevel() == alpha);
 	CHECK(!user->IsConvex());
 	CHECK(!user->IsSmoothConvex());
+	CHECK(!user->DerivativesCheap()); // its derivatives may be differences of its level: searches bracket
 	REQUIRE(user->CornerAngles().size() == 2);
 	CHECK(user->CornerAngles()[0] == -0.5 * kPi);
 

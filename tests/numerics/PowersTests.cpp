@@ -40,7 +40,7 @@ TEST_CASE("powers: CubeRoot is within an ulp of the exact cube root from 1e-290 
 	CHECK(worst <= 1.0);
 }
 
-TEST_CASE("powers: CubeRoot hands zero, the ends of the range, infinities and NaN to std::cbrt")
+TEST_CASE("powers: CubeRoot keeps zero with its sign and hands the ends of the range, infinities and NaN to std::cbrt")
 {
 	CHECK(CubeRoot(0.0) == 0.0);
 	CHECK(std::signbit(CubeRoot(-0.0)));

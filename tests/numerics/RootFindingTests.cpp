@@ -1,4 +1,5 @@
-// FindRootBrent and MinimizeBrent (numerics/RootFinding.h) on functions with known answers.
+// FindRootBrent, FindRootNewtonSafe and MinimizeBrent (numerics/RootFinding.h) on functions with
+// known answers.
 #include <doctest/doctest.h>
 
 #include "TestSupport.h"
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 using namespace b2a;
@@ -170,6 +172,133 @@ TEST_CASE("FindRootBrent: the evaluation cap and non-finite values end the solve
 	CHECK(!s.converged);
 	CHECK(std::isfinite(s.fx));
 	CHECK(s.fx == g(s.x));
+}
+
+namespace
+{
+// A function and its derivative for FindRootNewtonSafe, recording every argument.
+struct WithSlope
+{
+	double (*f)(double);
+	double (*df)(double);
+	std::vector<double> args;
+	double operator()(double x, double& d)
+	{
+		args.push_back(x);
+		d = df(x);
+		return f(x);
+	}
+};
+} // namespace
+
+TEST_CASE("FindRootNewtonSafe: the known roots of Brent's cases, in fewer evaluations")
+{
+	struct Case
+	{
+		const char* name;
+		double (*f)(double);
+		double (*df)(double);
+		double a, b, root;
+		bool smooth; // a simple root Newton reaches from the secant start without bisecting
+	};
+	const Case cases[] = {
+		{"cos x - x", [](double x) { return std::cos(x) - x; }, [](double x) { return -std::sin(x) - 1.0; }, 0.0, 1.0,
+		 0.739085133215160641655312087673873404, true},
+		{"x^3 - 2", [](double x) { return x * x * x - 2.0; }, [](double x) { return 3.0 * x * x; }, 0.0, 3.0,
+		 1.259921049894873164767210607278228351, true},
+		{"e^x - 10", [](double x) { return std::exp(x) - 10.0; }, [](double x) { return std::exp(x); }, -5.0, 5.0,
+		 2.302585092994045684017991454684364208, false},
+		{"1 - x^2", [](double x) { return 1.0 - x * x; }, [](double x) { return -2.0 * x; }, 0.0, 5.0, 1.0, true},
+		// Linear: both methods land on the root from the secant point.
+		{"x - 1e10", [](double x) { return x - 1e10; }, [](double) { return 1.0; }, 0.0, 1e11, 1e10, false},
+		{"x - 1e-20", [](double x) { return x - 1e-20; }, [](double) { return 1.0; }, -1.0, 1.0, 1e-20, false},
+		{"atan(x - 0.1)", [](double x) { return std::atan(x - 0.1); }, [](double x) { return 1.0 / (1.0 + (x - 0.1) * (x - 0.1)); },
+		 -100.0, 300.0, 0.1, false},
+	};
+	for (const Case& c : cases)
+	{
+		const std::string name = c.name;
+		CAPTURE(name);
+		WithSlope f{c.f, c.df, {}};
+		const ScalarResult r = FindRootNewtonSafe(f, c.a, c.b, c.f(c.a), c.f(c.b), 0.0);
+		CHECK(r.converged);
+		CHECK(std::fabs(r.x - c.root) <= 4 * kEps * std::fabs(c.root));
+		CHECK(r.iterations == int(f.args.size()));
+		for (double x : f.args)
+		{
+			CHECK(x > std::min(c.a, c.b));
+			CHECK(x < std::max(c.a, c.b));
+		}
+		const ScalarResult brent = Root(c.f, c.a, c.b, 0.0);
+		CHECK(r.iterations <= brent.iterations + 2);
+		if (c.smooth)
+			CHECK(r.iterations < brent.iterations);
+	}
+	// The line crossings it serves: a bracket of 1e-2 around a simple root takes 3 evaluations
+	// or fewer (Newton's quadratic convergence from the secant point), Brent's method more.
+	WithSlope cosine{[](double x) { return std::cos(x) - x; }, [](double x) { return -std::sin(x) - 1.0; }, {}};
+	const ScalarResult near = FindRootNewtonSafe(cosine, 0.735, 0.745, cosine.f(0.735), cosine.f(0.745), 0.0);
+	CHECK(near.converged);
+	CHECK(std::fabs(near.x - 0.739085133215160641655312087673873404) <= 2 * kEps);
+	CHECK(near.iterations <= 3);
+	CHECK(Root(cosine.f, 0.735, 0.745, 0.0).iterations > near.iterations);
+}
+
+TEST_CASE("FindRootNewtonSafe: bisects where Newton cannot be trusted (cusp, jump, wrong slope)")
+{
+	// ∛(x − 0.3): an infinite slope at the root, where Newton's steps double the error and
+	// alternate sides; the safeguard bisects.
+	WithSlope cusp{[](double x) { return std::cbrt(x - 0.3); },
+	               [](double x) { return 1.0 / (3.0 * std::cbrt((x - 0.3) * (x - 0.3))); }, {}};
+	const ScalarResult c = FindRootNewtonSafe(cusp, 0.0, 1.0, cusp.f(0.0), cusp.f(1.0), 0.0);
+	CHECK(c.converged);
+	CHECK(std::fabs(c.x - 0.3) <= 4 * kEps * 0.3);
+	CHECK(c.iterations < 100);
+	// A jump from −1 to 2 at √2 − 1 with a zero slope: every Newton step is rejected.
+	WithSlope jump{[](double x) { return x < std::sqrt(2.0) - 1.0 ? -1.0 : 2.0; }, [](double) { return 0.0; }, {}};
+	const ScalarResult j = FindRootNewtonSafe(jump, 0.0, 1.0, -1.0, 2.0, 0.0);
+	CHECK(j.converged);
+	CHECK(std::fabs(j.x - (std::sqrt(2.0) - 1.0)) <= 4 * kEps);
+	// A derivative of the wrong sign sends Newton away from the root: still solved, inside.
+	WithSlope wrong{[](double x) { return x * x * x - 2.0; }, [](double x) { return -3.0 * x * x; }, {}};
+	const ScalarResult w = FindRootNewtonSafe(wrong, 3.0, 0.0, 25.0, -2.0, 0.0); // b < a
+	CHECK(w.converged);
+	CHECK(std::fabs(w.x - std::cbrt(2.0)) <= 4 * kEps * std::cbrt(2.0));
+	for (double x : wrong.args)
+	{
+		CHECK(x > 0.0);
+		CHECK(x < 3.0);
+	}
+	// An absolute tolerance stops it there.
+	WithSlope cube{[](double x) { return x * x * x - 2.0; }, [](double x) { return 3.0 * x * x; }, {}};
+	const ScalarResult t = FindRootNewtonSafe(cube, 0.0, 3.0, -2.0, 25.0, 1e-3);
+	CHECK(t.converged);
+	CHECK(std::fabs(t.x - std::cbrt(2.0)) <= 1e-3);
+}
+
+TEST_CASE("FindRootNewtonSafe: no bracket, a zero at an end, NaN inside and the cap, as Brent's method")
+{
+	WithSlope f{[](double x) { return x * x + 1.0; }, [](double x) { return 2.0 * x; }, {}};
+	const ScalarResult u = FindRootNewtonSafe(f, -1.0, 2.0, 2.0, 5.0, 0.0);
+	CHECK(!u.converged);
+	CHECK(u.x == -1.0);
+	CHECK(u.iterations == 0);
+	const ScalarResult z = FindRootNewtonSafe(f, 0.5, 1.0, 0.0, 2.0, 0.0);
+	CHECK(z.converged);
+	CHECK(z.x == 0.5);
+	CHECK(f.args.empty());
+	// NaN on (0.6, 1) though finite at both ends: unconverged at the bracket's better end.
+	WithSlope g{[](double x) { return x <= 0.6 ? x - 0.7 : (x < 1.0 ? std::nan("") : 0.3); }, [](double) { return 1.0; }, {}};
+	const ScalarResult n = FindRootNewtonSafe(g, 0.0, 1.0, -0.7, 0.3, 0.0);
+	CHECK(!n.converged);
+	CHECK(std::isfinite(n.fx));
+	CHECK(n.fx == g.f(n.x));
+	// The cap.
+	WithSlope cube{[](double x) { return x * x * x - 2.0; }, [](double x) { return 3.0 * x * x; }, {}};
+	const ScalarResult capped = FindRootNewtonSafe(cube, 0.0, 3.0, -2.0, 25.0, 0.0, 2);
+	CHECK(!capped.converged);
+	CHECK(capped.iterations == 2);
+	CHECK(cube.args.size() == 2);
 }
 
 TEST_CASE("MinimizeBrent: finds known minima of smooth functions")

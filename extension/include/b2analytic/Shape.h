@@ -219,6 +219,12 @@ public:
 	/// are in λ's own units.
 	double LevelPower() const { return m_levelPower; }
 
+	/// Derivatives() costs about as much as Level() (closed forms, as for the heart and the
+	/// superellipse): searches along a line then take Newton steps instead of bracketing on
+	/// values alone. False by default (a shape whose derivatives come from differences of its
+	/// level, as a user shape's may, is better served by the bracketing).
+	bool DerivativesCheap() const { return m_derivativesCheap; }
+
 	/// Polar angles (in [-π, π)) where the surface has corners; quadrature and sampling split there.
 	const std::vector<double>& CornerAngles() const { return m_corners; }
 	/// The corners' rays as unit vectors (cos, sin of CornerAngles, in the same order).
@@ -259,6 +265,8 @@ protected:
 	void Finalize(double boundingRadius, const MassProperties* mass);
 	/// Add a corner angle (before Finalize).
 	void AddCorner(double theta);
+	/// Declare DerivativesCheap() (in the derived constructor).
+	void SetDerivativesCheap() { m_derivativesCheap = true; }
 	/// A length scale used to bracket radial roots before the bounding radius is known.
 	virtual double LengthHint() const { return 1.0; }
 
@@ -268,6 +276,7 @@ private:
 	bool m_convex;
 	bool m_smoothConvex;
 	double m_levelPower;
+	bool m_derivativesCheap = false;
 	double m_boundingRadius = 0.0;
 	MassProperties m_mass;
 	std::vector<double> m_corners;

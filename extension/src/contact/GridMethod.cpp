@@ -50,6 +50,17 @@ struct SurfaceWalk
 	}
 };
 
+// Whether the direction of x lies on the counter-clockwise arc of directions from `from` to `to`
+// (ends included), by cross products: the polar angles' comparison without atan2 (which, with
+// the unwrapping, was a tenth of a heart contact's Newton refinement). Arcs of π or more are
+// those whose complement, under π, does not hold x strictly.
+inline bool WithinArc(Vec2 from, Vec2 to, Vec2 x)
+{
+	if (Cross(from, to) > 0.0)
+		return Cross(from, x) >= 0.0 && Cross(x, to) >= 0.0;
+	return !(Cross(to, x) > 0.0 && Cross(x, from) > 0.0);
+}
+
 // Newton on the stationarity conditions of min λA over B's level-LB curve, in A's body frame:
 //   ∇λA(y) + μ∇λB(y) = 0,  λB(y) − LB = 0,
 // Jacobian [[HA + μHB, ∇λB], [∇λBᵀ, 0]]. Its tangential block tᵀ(HA + μHB)t, t ⟂ ∇λB, is the
@@ -58,10 +69,10 @@ struct SurfaceWalk
 // quadratically; each step costs two derivative evaluations where the Brent search on the slope
 // costs a radius solve per evaluation. Returns false (the caller then brackets) when the
 // tangential curvature is not positive, a step leaves the neighbours' chord, the iteration cap
-// is reached, or the answer lies outside (lo, hi) or above the sample's value: at corners and
-// where two minima share a bracket.
-bool RefineNewton(const SurfaceWalk& walk, double lo, double hi, double mid, Vec2 start, double startValue,
-                  double reach, double& theta, double& value, Vec2& point)
+// is reached, or the answer lies outside the arc from B's point `from` to `to` (counter-clockwise,
+// B's body frame) or above the sample's value: at corners and where two minima share a bracket.
+bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, double startValue, double reach, double& value,
+                  Vec2& point)
 {
 	const Rot q = walk.bInA.q;
 	Vec2 y = ToWorld(walk.bInA, start);
@@ -100,12 +111,10 @@ bool RefineNewton(const SurfaceWalk& walk, double lo, double hi, double mid, Vec
 		if (stepLength <= tolerance)
 		{
 			const Vec2 x = ToBody(walk.bInA, y);
-			const double t = mid + std::remainder(std::atan2(x.y, x.x) - mid, 2.0 * kPi);
 			++walk.evaluations;
 			const double v = walk.a.Level(y);
-			if (!(t >= lo && t <= hi) || !(v <= startValue))
+			if (!WithinArc(from, to, x) || !(v <= startValue))
 				return false;
-			theta = t;
 			value = v;
 			point = x;
 			return true;
@@ -146,7 +155,16 @@ bool CornerRayCrossing(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double& value,
 		const double g0 = g(s0), g1 = g(s1);
 		if (!(g0 * g1 <= 0.0))
 			continue;
-		const ScalarResult r = FindRootBrent(g, s0, s1, g0, g1, 0.0, 200);
+		// Newton kept in the bracket where B's derivatives are cheap (FirstSurfaceCrossing's rule).
+		const Vec2 uB = InvRotate(walk.bInA.q, u);
+		auto gdg = [&](double s, double& dg) {
+			++walk.evaluations;
+			const LevelDerivatives d = walk.b.Derivatives(ToBody(walk.bInA, s * u));
+			dg = Dot(d.gradient, uB);
+			return d.value - walk.levelB;
+		};
+		const ScalarResult r = walk.b.DerivativesCheap() ? FindRootNewtonSafe(gdg, s0, s1, g0, g1, 0.0, 100)
+		                                                 : FindRootBrent(g, s0, s1, g0, g1, 0.0, 200);
 		const Vec2 y = r.x * u;
 		++walk.evaluations;
 		const double v = walk.a.Level(y);
@@ -196,35 +214,34 @@ void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double
 // no curvature there); anything else, the bracketing search.
 template <typename SamplePoint>
 void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int k, const SamplePoint& samplePoint,
-                     double& theta, double& value, Vec2& point)
+                     double& value, Vec2& point)
 {
 	const int n = samples.Count();
 	double lo, hi;
 	samples.NeighbourAngles(k, lo, hi);
 	const Vec2 pl = samplePoint((k + n - 1) % n), ph = samplePoint((k + 1) % n);
 	const double reach = Distance(pl, ph);
-	const double sampleTheta = theta, sampleValue = value;
+	const double sampleTheta = samples.angle[k], sampleValue = value;
 	if (IsCorner(walk.b, sampleTheta))
 	{
 		// B's corner: its curve has no tangent there, so Newton cannot start on it. The corner
 		// is the minimum unless a smooth minimum lies beside it, lower, within the bracket (an
 		// edge of a diamond touched next to its vertex); Newton from each neighbour looks there.
-		double t, v;
+		const Vec2 corner = point;
+		double v;
 		Vec2 x;
-		if (RefineNewton(walk, lo, sampleTheta, 0.5 * (lo + sampleTheta), pl, value, reach, t, v, x) && v < value)
-			theta = t, value = v, point = x;
-		if (RefineNewton(walk, sampleTheta, hi, 0.5 * (sampleTheta + hi), ph, value, reach, t, v, x) && v < value)
-			theta = t, value = v, point = x;
+		if (RefineNewton(walk, pl, corner, pl, value, reach, v, x) && v < value)
+			value = v, point = x;
+		if (RefineNewton(walk, corner, ph, ph, value, reach, v, x) && v < value)
+			value = v, point = x;
 		return;
 	}
-	if (RefineNewton(walk, lo, hi, sampleTheta, point, sampleValue, reach, theta, value, point))
+	if (RefineNewton(walk, pl, ph, point, sampleValue, reach, value, point))
 		return;
 	const Pose& bInA = walk.bInA;
 	if (CornerRayCrossing(walk, ToWorld(bInA, pl), ToWorld(bInA, ph), value, point))
-	{
-		theta = std::atan2(point.y, point.x);
 		return;
-	}
+	double theta = sampleTheta;
 	Refine(walk, lo, hi, theta, value);
 	if (theta != sampleTheta)
 		point = walk.b.SurfacePoint(theta, walk.levelB);
@@ -474,12 +491,10 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	Vec2 bestPoint = samplePoint(minima[0]);
 	for (int k : minima)
 	{
-		double lo, hi;
-		samples->NeighbourAngles(k, lo, hi);
-		double theta = samples->angle[k], v = value[k];
+		double v = value[k];
 		Vec2 point = samplePoint(k);
 		if (options.gridRefine)
-			RefineCandidate(walk, *samples, k, samplePoint, theta, v, point);
+			RefineCandidate(walk, *samples, k, samplePoint, v, point);
 		if (v < bestValue)
 		{
 			bestValue = v;

@@ -13,6 +13,7 @@ HeartShape::HeartShape(double alpha) : Shape(ShapeFamily::heart, alpha, false, f
 {
 	if (!std::isfinite(alpha) || !(alpha > 0.0))
 		throw InvalidParameter("heart", "alpha", "must be finite and > 0", alpha);
+	SetDerivativesCheap();
 	AddCorner(0.5 * kPi);  // notch
 	AddCorner(-0.5 * kPi); // tip
 	Finalize(-1.0, nullptr);

@@ -38,13 +38,14 @@ inline double CubeRootGuess(double x)
 /// From CubeRootGuess (within 4 %), two Halley steps y ← y·(y³ + 2x)/(2y³ + x), each cubing the
 /// relative error (4e-2 → 2e-5 → 3e-15), and a Newton step to rounding, written
 /// y ← y + (x/y² − y)/3 (its correction loses less to rounding than (y³ − x)/(3y²)). Outside
-/// 1e-290 to 1e290 (where y³ and 2y³ could leave the range), zero, infinities and NaN go to
-/// std::cbrt.
+/// 1e-290 to 1e290 (where y³ and 2y³ could leave the range), infinities and NaN go to
+/// std::cbrt; zero is its own root (a heart's level at its centre and on its axis, asked for on
+/// every heart contact, where std::cbrt cost as much as the rest of the level).
 inline double CubeRoot(double x)
 {
 	const double ax = std::fabs(x);
 	if (!(ax >= 1e-290 && ax <= 1e290))
-		return std::cbrt(x);
+		return x == 0.0 ? x : std::cbrt(x);
 	double y = CubeRootGuess(ax);
 	for (int k = 0; k < 2; ++k)
 	{
@@ -60,10 +61,16 @@ inline double CubeRoot(double x)
 /// CubeRootGuess (within 4 %), two Newton steps y ← (2y + x/y²)/3: each lands at or above the
 /// root (the arithmetic mean of y, y and x/y² is at least their geometric mean, ∛x) and squares
 /// the relative error (4e-2 → 1.6e-3 → 2.6e-6). The upper end takes a margin for the steps'
-/// rounding, the lower one divides by 1 + 1e-5. Outside 1e-290 to 1e290, and for x = 0 and
-/// non-finite x, both come from std::cbrt with the margin.
+/// rounding, the lower one divides by 1 + 1e-5. x = 0 has the exact bounds 0 (a disc across the
+/// heart's axis: a tenth of the grid's bounds); outside 1e-290 to 1e290 and for non-finite x
+/// both come from std::cbrt with the margin.
 inline void CubeRootBounds(double x, double& lower, double& upper)
 {
+	if (x == 0.0)
+	{
+		lower = upper = 0.0;
+		return;
+	}
 	if (!(x >= 1e-290 && x <= 1e290))
 	{
 		const double r = std::cbrt(x);
