@@ -1,6 +1,7 @@
 // b2analytic: the grid method (paper section 3) with local refinement, and its common level.
 #include "b2analytic/CommonLevel.h"
 
+#include "contact/LevelAlongLine.h"
 #include "contact/PairFrame.h"
 #include "numerics/RootFinding.h"
 #include "numerics/SmallLinear.h"
@@ -155,16 +156,8 @@ bool CornerRayCrossing(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double& value,
 		const double g0 = g(s0), g1 = g(s1);
 		if (!(g0 * g1 <= 0.0))
 			continue;
-		// Newton kept in the bracket where B's derivatives are cheap (FirstSurfaceCrossing's rule).
-		const Vec2 uB = InvRotate(walk.bInA.q, u);
-		auto gdg = [&](double s, double& dg) {
-			++walk.evaluations;
-			const LevelDerivatives d = walk.b.Derivatives(ToBody(walk.bInA, s * u));
-			dg = Dot(d.gradient, uB);
-			return d.value - walk.levelB;
-		};
-		const ScalarResult r = walk.b.DerivativesCheap() ? FindRootNewtonSafe(gdg, s0, s1, g0, g1, 0.0, 100)
-		                                                 : FindRootBrent(g, s0, s1, g0, g1, 0.0, 200);
+		const ScalarResult r = LevelRootAlongLine(walk.b, walk.bInA, Vec2(), u, walk.levelB, s0, s1, g0, g1);
+		walk.evaluations += r.iterations;
 		const Vec2 y = r.x * u;
 		++walk.evaluations;
 		const double v = walk.a.Level(y);

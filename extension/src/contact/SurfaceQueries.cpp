@@ -1,6 +1,7 @@
 // b2analytic: point tests, line crossings and ray casts against the true shape.
 #include "b2analytic/SurfaceQueries.h"
 
+#include "contact/LevelAlongLine.h"
 #include "numerics/RootFinding.h"
 
 #include <algorithm>
@@ -57,19 +58,9 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 	// march evaluates only near the surface. Near the shape's corners it looks down to 1/64 of
 	// the step, and finds a crossing pair that thin (a line clipping a heart's tip) where the
 	// plain step would step over it.
-	// The crossing in a bracket the march found: Newton kept in the bracket where the shape's
-	// derivatives are cheap (2 or 3 evaluations for a heart where Brent's method takes 7 or 8;
-	// the same root to rounding), Brent's method on the values otherwise.
-	const Vec2 bodyDir = InvRotate(pose.q, dir);
+	// The crossing in a bracket the march found.
 	auto root = [&](double from, double to, double ffrom, double fto) {
-		if (!shape.DerivativesCheap())
-			return FindRootBrent(f, from, to, ffrom, fto, 0.0, 200).x;
-		auto fdf = [&](double s, double& df) {
-			const LevelDerivatives d = shape.Derivatives(ToBody(pose, X + s * dir));
-			df = Dot(d.gradient, bodyDir);
-			return d.value - own;
-		};
-		return FindRootNewtonSafe(fdf, from, to, ffrom, fto, 0.0, 100).x;
+		return LevelRootAlongLine(shape, pose, X, dir, own, from, to, ffrom, fto).x;
 	};
 	const double len = Length(dir);
 	const double h = std::min(sMax / 64.0, 0.5 * shape.SamplesRef().maxSpacing / std::max(len, 1e-300));

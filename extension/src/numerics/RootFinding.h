@@ -165,18 +165,20 @@ ScalarResult FindRootNewtonSafe(FDF&& fdf, double a, double b, double fa, double
 	const double width = std::fabs(b - a);
 	double before = width, last = width; // the steps before last and last
 	bool lastNewton = false;             // the last step was Newton's (K can be read off it)
+	auto betterEnd = [&](bool converged) {
+		const bool negBetter = std::fabs(fneg) < std::fabs(fpos);
+		r.x = negBetter ? neg : pos;
+		r.fx = negBetter ? fneg : fpos;
+		r.converged = converged;
+		return r;
+	};
 	for (int it = 1; it <= maxIter; ++it)
 	{
 		double df = 0.0;
 		const double fx = fdf(x, df);
 		r.iterations = it;
 		if (!std::isfinite(fx))
-		{
-			const bool negBetter = std::fabs(fneg) < std::fabs(fpos);
-			r.x = negBetter ? neg : pos;
-			r.fx = negBetter ? fneg : fpos;
-			return r;
-		}
+			return betterEnd(false);
 		if (fx == 0.0)
 		{
 			r.x = x; r.fx = 0.0; r.converged = true;
@@ -195,12 +197,9 @@ ScalarResult FindRootNewtonSafe(FDF&& fdf, double a, double b, double fa, double
 		                     10.0 * (step / (last * last)) * step * step <= tol;
 		if (step <= tol || settled || hi - lo <= 2.0 * tol)
 		{
-			r.x = next; r.fx = fx + df * (next - x); r.converged = true;
 			if (!newton)
-			{
-				r.x = std::fabs(fneg) < std::fabs(fpos) ? neg : pos; // the bracket collapsed: its better end
-				r.fx = std::fabs(fneg) < std::fabs(fpos) ? fneg : fpos;
-			}
+				return betterEnd(true); // the bracket collapsed
+			r.x = next; r.fx = fx + df * (next - x); r.converged = true;
 			return r;
 		}
 		before = last;
@@ -208,10 +207,7 @@ ScalarResult FindRootNewtonSafe(FDF&& fdf, double a, double b, double fa, double
 		lastNewton = newton;
 		x = next;
 	}
-	const bool negBetter = std::fabs(fneg) < std::fabs(fpos);
-	r.x = negBetter ? neg : pos;
-	r.fx = negBetter ? fneg : fpos;
-	return r;
+	return betterEnd(false);
 }
 
 /// A root of f between a and b (f(a), f(b) of opposite signs) where the root may lie many orders
