@@ -441,3 +441,121 @@ TEST_CASE("superellipse pairs: blocky pairs start cold from their boxes' contact
 		CHECK(double(iterations) / double(pairs.size()) <= 4.5);
 	}
 }
+
+namespace
+{
+// The full solve's contact (SolveSuperellipsePairLevel from the same warm start, or cold, and
+// ContactFromLevel's rules), which the raw-level finish replaces.
+ContactResult FullContact(const Pair& p, const WarmStart* warm)
+{
+	const LevelResult level = SolveSuperellipsePairLevel(*p.a, p.pa, *p.b, p.pb, {}, warm);
+	REQUIRE(level.Ok());
+	return ContactFromLevel(*p.a, p.pa, *p.b, p.pb, level, level.level <= 1.0);
+}
+
+// The largest difference between two contacts: points and separation in units of `size`, the
+// normal in radians, the level relative.
+double ContactDifference(const ContactResult& x, const ContactResult& y, double size)
+{
+	return std::max({Distance(x.pointA, y.pointA) / size, Distance(x.pointB, y.pointB) / size, Distance(x.point, y.point) / size,
+	                 Distance(x.normal, y.normal), std::fabs(x.separation - y.separation) / size, RelativeError(x.level, y.level)});
+}
+} // namespace
+
+TEST_CASE("superellipse pairs: the raw-level finish gives the full solve's contact, warm and handed over cold")
+{
+	// FinishSuperellipseContact (SuperellipseContactFinish.cpp) solves the same equations on the
+	// raw levels f instead of the gauges f^{1/q} and finds the points by Halley steps: from a
+	// warm start along small motions (1e-3 of the size and 1 mrad a step) and from a cold solve
+	// handed over once its steps are below 5 % of the size, it must take nearly every pair and
+	// give the full solve's contact to 1e-12 (measured: 3.4e-15 warm, 1.2e-14 cold; the points
+	// where the normal line misses a particle far away by ContactFromLevel's search), and record
+	// the same warm start (measured: 3.7e-15).
+	const auto pairs = Pairs(4711, 60, {2.0, 3.0, 4.0, 6.0, 8.0});
+	int warmSolves = 0, warmTaken = 0, coldTaken = 0;
+	double worstWarm = 0.0, worstCold = 0.0, worstRecord = 0.0;
+	for (const Pair& start : pairs)
+	{
+		INFO(start.a->Describe() << " vs " << start.b->Describe());
+		REQUIRE(FinishApplies(*start.a, *start.b));
+		// Cold: the hand-over and the finish against ConvexContact's full solve.
+		SuperellipseHandOver handOver;
+		SolveSuperellipsePairLevel(*start.a, start.pa, *start.b, start.pb, {}, nullptr, nullptr, &handOver);
+		ContactResult cold;
+		if (handOver.taken && FinishSuperellipseContact(*start.a, start.pa, *start.b, start.pb, {}, handOver.point,
+		                                                handOver.multiplier, handOver.iterations, nullptr, cold))
+		{
+			++coldTaken;
+			worstCold = std::max(worstCold, ContactDifference(cold, FullContact(start, nullptr), Size(start)));
+		}
+		// Warm, along a motion.
+		Pair p = start;
+		WarmStart warm;
+		REQUIRE(ComputeContact(*p.a, p.pa, *p.b, p.pb, MethodChoice::automatic, {}, &warm).Ok());
+		for (int step = 0; step < 4; ++step)
+		{
+			p.pb = Pose(p.pb.p + 1e-3 * Size(p) * Vec2(0.6, -0.8), p.pb.q.Angle() + 1e-3);
+			++warmSolves;
+			WarmStart mine = warm, full = warm;
+			ContactResult c;
+			if (FinishSuperellipseContact(*p.a, p.pa, *p.b, p.pb, {}, WarmStartPoint(warm, p.pa, p.pb, Size(p)), warm.multiplier, 0,
+			                              &mine, c))
+			{
+				++warmTaken;
+				CHECK(c.status == SolveStatus::converged);
+				CHECK(c.method == SolveMethod::newton);
+				CHECK(c.touching == (c.separation <= 0.0));
+				CHECK(c.iterations >= 1);
+				worstWarm = std::max(worstWarm, ContactDifference(c, FullContact(p, &full), Size(p)));
+				// The warm start it records is the full solve's.
+				RecordWarmStart(&full, p.pa, p.pb, SolveSuperellipsePairLevel(*p.a, p.pa, *p.b, p.pb, {}, &warm));
+				CHECK(mine.valid);
+				CHECK(mine.hasPointB);
+				worstRecord = std::max({worstRecord, Distance(mine.localPoint, full.localPoint) / Size(p),
+				                        Distance(mine.localPointB, full.localPointB) / Size(p),
+				                        RelativeError(mine.multiplier, full.multiplier)});
+			}
+			REQUIRE(ComputeContact(*p.a, p.pa, *p.b, p.pb, MethodChoice::automatic, {}, &warm).Ok());
+		}
+	}
+	CAPTURE(worstWarm);
+	CAPTURE(worstCold);
+	CAPTURE(worstRecord);
+	CHECK(warmSolves == 240);
+	CHECK(warmTaken >= 238); // measured: all 240
+	CHECK(coldTaken >= 56);  // measured: 58 of 60
+	CHECK(worstWarm <= 1e-12);
+	CHECK(worstCold <= 1e-12);
+	CHECK(worstRecord <= 1e-12);
+}
+
+TEST_CASE("superellipse pairs: the raw-level finish declines a start far from the answer and writes nothing")
+{
+	// A warm start from before B jumped by a third of the size is outside the finish's reach (a
+	// first step over 5 % of the size): it returns false and leaves the contact and the warm
+	// start as they were; ComputeContact then takes the full solve from the same warm start and
+	// gives its answer. Real exponents are not the finish's at all.
+	const auto a = std::make_shared<SuperellipseShape>(1.0, 0.6, 4.0, 4.0), b = std::make_shared<SuperellipseShape>(0.8, 0.5, 4.0, 4.0);
+	const SuperellipseShape *sa = a.get(), *sb = b.get();
+	const Pose pa(Vec2(0.0, 0.0), 0.3), before(Vec2(1.6, 0.3), -0.4), after(Vec2(1.6, 0.6), -0.1);
+	WarmStart warm;
+	REQUIRE(ComputeContact(*a, pa, *b, before, MethodChoice::automatic, {}, &warm).Ok());
+	const WarmStart kept = warm;
+	ContactResult c;
+	c.iterations = -7;
+	const double size = 0.5 * (a->BoundingRadius() + b->BoundingRadius());
+	CHECK_FALSE(FinishSuperellipseContact(*sa, pa, *sb, after, {}, WarmStartPoint(warm, pa, after, size), warm.multiplier, 0,
+	                                      &warm, c));
+	CHECK(c.iterations == -7);
+	CHECK(c.status == SolveStatus::failed);
+	CHECK(warm.localPoint.x == kept.localPoint.x);
+	CHECK(warm.multiplier == kept.multiplier);
+	CHECK(warm.slide[0] == kept.slide[0]);
+	WarmStart full = warm;
+	const ContactResult viaTable = ComputeContact(*a, pa, *b, after, MethodChoice::automatic, {}, &warm);
+	const Pair p{a, b, pa, after};
+	CHECK(ContactDifference(viaTable, FullContact(p, &full), size) <= 1e-12);
+	CHECK_FALSE(FinishApplies(*sa, SuperellipseShape(1.0, 0.5, 2.5, 4.0)));
+	CHECK_FALSE(FinishSuperellipseContact(*sa, pa, SuperellipseShape(1.0, 0.5, 2.5, 4.0), after, {}, Vec2(0.8, 0.1), 1.0, 0,
+	                                      nullptr, c));
+}

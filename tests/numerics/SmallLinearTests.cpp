@@ -1,5 +1,5 @@
-// Solve3 and SolveBordered (numerics/SmallLinear.h) against Eigen's pivoted LU: solutions, and
-// the exact 1-norm condition number from Eigen's explicit inverse.
+// Solve3, SolveBordered and SolveBorderedSolution (numerics/SmallLinear.h) against Eigen's
+// pivoted LU: solutions, and the exact 1-norm condition number from Eigen's explicit inverse.
 #include <doctest/doctest.h>
 
 #include "TestSupport.h"
@@ -22,7 +22,7 @@ double EigenRcond(const Eigen::Matrix3d& J)
 }
 } // namespace
 
-TEST_CASE("small linear: Solve3 and SolveBordered match Eigen on bordered Newton matrices, solution and condition")
+TEST_CASE("small linear: Solve3 and SolveBordered match Eigen on bordered Newton matrices, solution and condition; SolveBorderedSolution is SolveBordered's solution")
 {
 	// The matrices the common-level Newton builds: [[H, g], [dᵀ, 0]] with H symmetric (positive
 	// or not), entries spread over six orders of magnitude, and conditions down to ~1e-10.
@@ -42,6 +42,12 @@ TEST_CASE("small linear: Solve3 and SolveBordered match Eigen on bordered Newton
 		const double Jr[3][3] = {{h11, h12, g1}, {h12, h22, g2}, {d1, d2, 0.0}};
 		const Solve3Result full = Solve3(Jr, r);
 		const Solve3Result bordered = SolveBordered(h11, h12, h22, g1, g2, d1, d2, r);
+		// Without the condition number: the same solution, bit for bit.
+		double alone[3] = {0.0, 0.0, 0.0};
+		REQUIRE(SolveBorderedSolution(h11, h12, h22, g1, g2, d1, d2, r, alone));
+		CHECK(alone[0] == bordered.x[0]);
+		CHECK(alone[1] == bordered.x[1]);
+		CHECK(alone[2] == bordered.x[2]);
 		REQUIRE(full.rcond > 0.0);
 		REQUIRE(bordered.rcond > 0.0);
 		// A solve loses about eps / rcond of the solution's size.
@@ -63,13 +69,17 @@ TEST_CASE("small linear: Solve3 and SolveBordered match Eigen on bordered Newton
 	CHECK(worstRcond <= 1e-4);
 }
 
-TEST_CASE("small linear: singular and non-finite matrices give rcond 0 and a zero solution")
+TEST_CASE("small linear: singular and non-finite matrices give rcond 0 and a zero solution, or no solution")
 {
 	const double r[3] = {1.0, 2.0, 3.0};
 	// d parallel to what makes the determinant vanish exactly: H = I, g = (1, 0), d = (0, 0).
 	const Solve3Result singular = SolveBordered(1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, r);
 	CHECK(singular.rcond == 0.0);
 	CHECK(singular.x[0] == 0.0);
+	double x[3] = {7.0, 7.0, 7.0};
+	CHECK_FALSE(SolveBorderedSolution(1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, r, x));
+	CHECK_FALSE(SolveBorderedSolution(std::nan(""), 0.0, 1.0, 1.0, 0.0, 1.0, 0.0, r, x));
+	CHECK(x[0] == 7.0); // untouched
 	const Solve3Result nan = SolveBordered(std::nan(""), 0.0, 1.0, 1.0, 0.0, 1.0, 0.0, r);
 	CHECK(nan.rcond == 0.0);
 	// A regular one, for contrast: [[1, 0, 1], [0, 1, 0], [1, 0, 0]] x = (1, 2, 3) has x = (3, 2, −2).

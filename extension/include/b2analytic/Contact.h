@@ -55,8 +55,10 @@ ContactResult CircleContact(const Shape& a, const Pose& pa, const Shape& b, cons
 /// and the rare cases it does not handle go to ConvexContact.
 ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
 /// Two smooth superellipses (n, m ≥ 2, or one of them an ellipse or circle): the common level by
-/// Newton with the levels evaluated inline; the same answer as ConvexContact, sooner. Other
-/// shapes and the rare cases it does not finish go to ConvexContact.
+/// Newton with the levels evaluated inline; the same answer as ConvexContact, sooner. With
+/// integer exponents the last Newton steps (all of them from a warm start) run on the raw levels
+/// |x/a|^n + |y/b|^m, without the gauge's roots, and the points come from Halley steps along the
+/// normal. Other shapes and the rare cases it does not finish go to ConvexContact.
 ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
 /// Common level (Newton + min–max fallback) for smooth convex shapes; grid otherwise.
 ContactResult ConvexContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);

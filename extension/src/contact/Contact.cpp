@@ -6,6 +6,7 @@
 #include "contact/PairFrame.h"
 #include "contact/ResultChecks.h"
 #include "contact/SolverCore.h"
+#include "contact/WarmSlide.h"
 #include "geometry/SuperellipseTerms.h"
 #include "numerics/RootFinding.h"
 
@@ -187,17 +188,6 @@ ContactResult ContactOfLevel(const LevelResult& level)
 	return c;
 }
 
-// The separation along the normal between the points, agreeing in sign with the level solve's
-// verdict `touching` (where rounding makes them disagree, |separation| is at rounding level).
-void SetSeparation(ContactResult& c, bool touching)
-{
-	c.separation = Dot(c.pointB - c.pointA, c.normal);
-	if (touching && c.separation > 0.0)
-		c.separation = 0.0; // tangent to rounding
-	else if (!touching && !(c.separation > 0.0))
-		c.separation = std::numeric_limits<double>::denorm_min(); // apart by a rounding-level gap
-	c.touching = touching;
-}
 } // namespace
 
 ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const LevelResult& level,
@@ -357,12 +347,36 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 	const SuperellipseShape* sb = sa ? AsSmoothSuperellipse(b) : nullptr;
 	if (!sb || CentresCoincide(a, pa, b, pb))
 		return ConvexContact(a, pa, b, pb, options, warm);
+	// Integer exponents: the last Newton steps and the points on the raw levels
+	// (FinishSuperellipseContact), from a warm start or from where the cold solve's steps are
+	// small; where it declines, the full solve from the start.
+	ContactResult c;
+	SuperellipseHandOver handOver;
+	SuperellipseHandOver* hand = nullptr;
+	if (FinishApplies(*sa, *sb))
+	{
+		if (warm && warm->valid && warm->hasPointB && warm->multiplier > 0.0)
+		{
+			const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
+			if (FinishSuperellipseContact(*sa, pa, *sb, pb, options, WarmStartPoint(*warm, pa, pb, size), warm->multiplier, 0,
+			                              warm, c))
+				return c;
+		}
+		else
+			hand = &handOver;
+	}
 	SuperellipsePairPoint at;
-	const LevelResult level = CheckedResult(SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at));
+	LevelResult level = CheckedResult(SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at, hand));
+	if (handOver.taken)
+	{
+		if (FinishSuperellipseContact(*sa, pa, *sb, pb, options, handOver.point, handOver.multiplier, handOver.iterations, warm, c))
+			return c;
+		level = CheckedResult(SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at));
+	}
 	if (!level.Ok() || !at.valid)
 		return ConvexContact(a, pa, b, pb, options, warm);
 	RecordWarmStart(warm, pa, pb, level, &at.slide);
-	ContactResult c = ContactOfLevel(level);
+	c = ContactOfLevel(level);
 	// ContactNormal's mean of the unit normals (they are opposed: the solve checked).
 	c.normal = Normalize(Normalize(at.gradA) - Normalize(at.gradB));
 	// ContactFromLevel's points, the first step of each line crossing from the level and

@@ -4,6 +4,7 @@
 #include "b2analytic/ContactResult.h"
 
 #include <cmath>
+#include <limits>
 
 namespace b2a
 {
@@ -57,6 +58,18 @@ inline LevelResult CheckedResult(LevelResult r)
 	if (!finite)
 		r = NonFiniteFailure(r);
 	return r;
+}
+
+/// The separation along the normal between the points, agreeing in sign with the level solve's
+/// verdict `touching` (where rounding makes them disagree, |separation| is at rounding level).
+inline void SetSeparation(ContactResult& c, bool touching)
+{
+	c.separation = Dot(c.pointB - c.pointA, c.normal);
+	if (touching && c.separation > 0.0)
+		c.separation = 0.0; // tangent to rounding
+	else if (!touching && !(c.separation > 0.0))
+		c.separation = std::numeric_limits<double>::denorm_min(); // apart by a rounding-level gap
+	c.touching = touching;
 }
 
 } // namespace b2a

@@ -84,12 +84,41 @@ struct SuperellipsePairPoint
 	LevelSlide slide;     ///< the answer's slide (computed only where the caller keeps a warm start)
 	bool valid = false;   ///< false: compute them as ContactFromLevel does
 };
+/// Where SolveSuperellipsePairLevel hands a cold solve over to FinishSuperellipseContact: once a
+/// full Newton step on the gauges moved the point less than `below` (in units of the pair's
+/// size), the solve stops there, returns a failed result ("handed over") and fills `point` and
+/// `multiplier`.
+struct SuperellipseHandOver
+{
+	double below = 5e-2;    ///< the step, in units of the pair's size, below which it hands over
+	Vec2 point;             ///< the point then, in A's body frame (world lengths)
+	double multiplier = 0.0; ///< μ then
+	int iterations = 0;     ///< the Newton iterations it took
+	bool taken = false;     ///< true: the solve stopped here
+};
+
 /// Common level of two smooth superellipses (AsSmoothSuperellipse) by the generic Newton's
 /// equations and rules with the levels evaluated inline in A's frame (SuperellipsePairLevel.cpp);
 /// warm starts and multipliers are interchangeable with SolveCommonLevelNewton's.
 LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
                                        const SolverOptions& options, const WarmStart* warm,
-                                       SuperellipsePairPoint* at = nullptr);
+                                       SuperellipsePairPoint* at = nullptr, SuperellipseHandOver* handOver = nullptr);
+
+/// Whether FinishSuperellipseContact takes the pair: integer exponents ≥ 2 throughout.
+bool FinishApplies(const SuperellipseShape& a, const SuperellipseShape& b);
+
+/// The contact of two smooth superellipses with integer exponents ≥ 2 (FinishApplies) from a
+/// point `x` (A's body frame, world lengths) and multiplier `mu` within Newton's quadratic regime
+/// of the answer (a warm start's WarmStartPoint, or a cold solve's SuperellipseHandOver),
+/// SuperellipseContactFinish.cpp: Newton on the raw levels f, the points by Halley steps, and
+/// the next warm start recorded into `warm` where given. The same equations and answer as
+/// SolveSuperellipsePairLevel and ContactFromLevel's rules, for a fraction of their cost;
+/// `priorIterations` are added to the contact's count. False, with nothing written, where the
+/// steps do not contract as Newton's do near a root or anything is out of the ordinary (the
+/// caller takes the full solver). On success every field of `contact` is written.
+bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                               const SolverOptions& options, Vec2 x, double mu, int priorIterations, WarmStart* warm,
+                               ContactResult& contact);
 
 /// Newton–Raphson on the common level from (ξ, m = log μ) in a PairFrame; `level` is λA there.
 LevelResult RunNewton(const PairFrame& frame, Vec2 xi, double m, const SolverOptions& options, LevelSlide* slide = nullptr);

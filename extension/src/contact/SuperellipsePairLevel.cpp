@@ -191,7 +191,8 @@ const SuperellipseShape* AsSmoothSuperellipse(const Shape& s)
 }
 
 LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
-                                       const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at)
+                                       const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at,
+                                       SuperellipseHandOver* handOver)
 {
 	// The generic Newton (CommonLevelNewton.cpp: the same equations, gauge, trust region, line
 	// search and stopping rules) without what it pays for being generic: the shapes are evaluated
@@ -201,6 +202,8 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	// need. Its warm starts and multipliers are interchangeable with the generic solver's.
 	if (at)
 		at->valid = false;
+	if (handOver)
+		handOver->taken = false;
 	LevelResult result;
 	result.method = SolveMethod::newton;
 	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
@@ -383,6 +386,16 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		const bool full = limit == 1.0 && alpha == 1.0;
 		if ((full && moved <= options.stepTolerance) || current->relative < 1e-15)
 			break;
+		if (handOver && full && moved <= handOver->below && std::isfinite(current->relative))
+		{
+			// Within Newton's quadratic regime: the caller finishes on the raw levels.
+			handOver->point = size * current->xi;
+			handOver->multiplier = current->mu;
+			handOver->iterations = it;
+			handOver->taken = true;
+			result.failure = "handed over to FinishSuperellipseContact";
+			return result;
+		}
 		previousXi = full ? stepXi : 0.0;
 		previousMu = full ? stepMu : 0.0;
 		if (it == cap)

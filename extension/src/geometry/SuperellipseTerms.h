@@ -69,6 +69,30 @@ inline LevelDerivatives RawSuperellipseDerivatives(const SuperellipseTerms& t, V
 	return d;
 }
 
+/// Whether both exponents are integers of at least 2 (IntegerSuperellipseDerivatives applies):
+/// then f is a polynomial in |X| and |Y|, twice differentiable, with no pow and no branch on 2.
+inline bool IntegerExponents(const SuperellipseTerms& t) { return t.nInt >= 2 && t.mInt >= 2; }
+
+/// f, ∇f and the diagonal of ∇²f in the shape's own axes (∂²f/∂x∂y = 0).
+struct AxisDerivatives
+{
+	double f, gx, gy, hx, hy;
+};
+
+/// RawSuperellipseDerivatives for integer exponents ≥ 2 (IntegerExponents), without its cases for
+/// exponents below 2 and real ones: with X = x/a, |X|^{n−2} by multiplication, |X|^{n−1} = that
+/// times |X|, f = |X|^n + |Y|^m, ∂f/∂x = (n/a) sgn(X)|X|^{n−1}, ∂²f/∂x² = n(n−1)/a² |X|^{n−2}
+/// (the same operations in the same order, so the same values).
+inline AxisDerivatives IntegerSuperellipseDerivatives(const SuperellipseTerms& t, double x, double y)
+{
+	const double X = x * t.invA, Y = y * t.invB;
+	const double ax = std::fabs(X), ay = std::fabs(Y);
+	const double xn2 = PowAbs(ax, 0.0, t.nInt - 2), ym2 = PowAbs(ay, 0.0, t.mInt - 2);
+	const double xn1 = xn2 * ax, ym1 = ym2 * ay;
+	return {xn1 * ax + ym1 * ay, t.gradX * std::copysign(xn1, X), t.gradY * std::copysign(ym1, Y), t.hessX * xn2,
+	        t.hessY * ym2};
+}
+
 /// The terms of the same superellipse measured in units of `length` (semi-axes a/length and
 /// b/length): f is unchanged at corresponding points, its gradient is `length` times and its
 /// Hessian `length²` times the original's. Solvers that work in units of the pair's size use it.
@@ -173,5 +197,52 @@ inline bool SuperellipseFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, 
 	return false;
 }
 
+/// The far crossing of f = 1 by the body line x + t·d for integer exponents (IntegerExponents),
+/// by Halley's method on g(t) = f(x + t·d) − 1 from t = 0, where `known` = {f, f', f''} (the
+/// caller's level solve ends with f, ∇f and ∇²f at x). A warm contact's point lies within a
+/// small fraction of the size of both surfaces, where g is a smooth polynomial in t and Halley's
+/// cubic convergence takes one step from the known values and one from an evaluation: the error
+/// after a step δ is about K·|δ|³ with K ≈ |δ|/|δ_before|³, so a step whose predecessor was small
+/// (1e-3 of `unit`) and that contracted tenfold ends the search when 10·K·|δ|³ is below the
+/// tolerance (1e-15 of |t| + unit; `unit` is the particle's smaller semi-axis). Where g·g'' is
+/// large against g'² (far outside) the step is Newton's, which descends onto the far crossing
+/// of the convex g from outside. False where g' ≤ 0 (the line misses or runs along the
+/// particle) or it does not settle in 8 steps: the caller takes SuperellipseFarCrossing.
+inline bool IntegerFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit, double& t)
+{
+	const double X = x.x * s.invA, Y = x.y * s.invB, D = d.x * s.invA, E = d.y * s.invB;
+	const double nD = s.n * D, mE = s.m * E, nnDD = s.n * (s.n - 1.0) * D * D, mmEE = s.m * (s.m - 1.0) * E * E;
+	double g = known[0] - 1.0, g1 = known[1], g2 = known[2];
+	t = 0.0;
+	double previous = 0.0; // the last step's length (0: none yet)
+	for (int it = 0; it < 8; ++it)
+	{
+		if (!(g1 > 0.0))
+			return false;
+		const double den = 2.0 * g1 * g1 - g * g2;
+		const double step = den >= g1 * g1 ? 2.0 * g * g1 / den : g / g1; // Halley, at most twice Newton's
+		t -= step;
+		const double size = std::fabs(step), tol = 1e-15 * (std::fabs(t) + unit);
+		if (!(size <= 4.0 * unit))
+			return false; // not near the surface, or not finite: the caller's search decides
+		if (size <= tol)
+			return true;
+		if (previous > 0.0 && previous <= 0.05 * unit && size < 0.1 * previous)
+		{
+			const double ratio = size / previous;
+			if (size * ratio * ratio * ratio <= 1e-15 * (std::fabs(t) + unit))
+				return true;
+		}
+		previous = size;
+		const double u = X + t * D, v = Y + t * E;
+		const double au = std::fabs(u), av = std::fabs(v);
+		const double un2 = PowAbs(au, 0.0, s.nInt - 2), vm2 = PowAbs(av, 0.0, s.mInt - 2);
+		const double un1 = un2 * au, vm1 = vm2 * av;
+		g = un1 * au + vm1 * av - 1.0;
+		g1 = nD * std::copysign(un1, u) + mE * std::copysign(vm1, v);
+		g2 = nnDD * un2 + mmEE * vm2;
+	}
+	return false;
+}
 
 } // namespace b2a

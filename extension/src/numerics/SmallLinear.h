@@ -55,36 +55,76 @@ inline Solve3Result Solve3(const double J[3][3], const double r[3])
 	return out;
 }
 
-/// Solve3 for the bordered symmetric matrix J = [[h11, h12, g1], [h12, h22, g2], [d1, d2, 0]] of
-/// the Newton steps on the common level (a 2×2 Hessian, the multiplier's column g and the
-/// level-equality row d): the same adjugate, solution and exact rcond, with the zero and the
-/// symmetry written out (about half the operations).
+/// The adjugate of the bordered symmetric matrix J = [[h11, h12, g1], [h12, h22, g2], [d1, d2, 0]]
+/// of the Newton steps on the common level (a 2×2 Hessian, the multiplier's column g and the
+/// level-equality row d), c[i][j] the cofactor of J[j][i], with the zero and the symmetry written
+/// out, and det J.
+struct BorderedAdjugate
+{
+	double c[3][3]; ///< adj(J)
+	double det;     ///< det(J)
+};
+
+/// BorderedAdjugate of J.
+inline BorderedAdjugate AdjugateOfBordered(double h11, double h12, double h22, double g1, double g2, double d1, double d2)
+{
+	BorderedAdjugate a;
+	a.c[0][0] = -g2 * d2;
+	a.c[0][1] = g1 * d2;
+	a.c[0][2] = h12 * g2 - g1 * h22;
+	a.c[1][0] = g2 * d1;
+	a.c[1][1] = -g1 * d1;
+	a.c[1][2] = g1 * h12 - h11 * g2;
+	a.c[2][0] = h12 * d2 - h22 * d1;
+	a.c[2][1] = h12 * d1 - h11 * d2;
+	a.c[2][2] = h11 * h22 - h12 * h12;
+	a.det = h11 * a.c[0][0] + h12 * a.c[1][0] + g1 * a.c[2][0];
+	return a;
+}
+
+/// x = adj(J)·r / det(J).
+inline void ApplyAdjugate(const BorderedAdjugate& a, const double r[3], double x[3])
+{
+	const double inv = 1.0 / a.det;
+	for (int i = 0; i < 3; ++i)
+		x[i] = (a.c[i][0] * r[0] + a.c[i][1] * r[1] + a.c[i][2] * r[2]) * inv;
+}
+
+/// Solve3 for the bordered symmetric matrix of BorderedAdjugate: the same adjugate, solution and
+/// exact rcond, with the zero and the symmetry written out (about half the operations).
 inline Solve3Result SolveBordered(double h11, double h12, double h22, double g1, double g2, double d1, double d2,
                                   const double r[3])
 {
 	Solve3Result out;
-	// Cofactors of J (C[i][j] = cofactor of J[j][i], the adjugate), J[2][2] = 0 and J[1][0] = J[0][1].
-	const double c00 = -g2 * d2, c01 = g1 * d2, c02 = h12 * g2 - g1 * h22;
-	const double c10 = g2 * d1, c11 = -g1 * d1, c12 = g1 * h12 - h11 * g2;
-	const double c20 = h12 * d2 - h22 * d1, c21 = h12 * d1 - h11 * d2, c22 = h11 * h22 - h12 * h12;
-	const double det = h11 * c00 + h12 * c10 + g1 * c20;
-	if (!(std::fabs(det) > 0.0) || !std::isfinite(det))
+	const BorderedAdjugate a = AdjugateOfBordered(h11, h12, h22, g1, g2, d1, d2);
+	if (!(std::fabs(a.det) > 0.0) || !std::isfinite(a.det))
 		return out;
 	const double j0 = std::fabs(h11) + std::fabs(h12) + std::fabs(d1), j1 = std::fabs(h12) + std::fabs(h22) + std::fabs(d2),
 	             j2 = std::fabs(g1) + std::fabs(g2);
-	const double k0 = std::fabs(c00) + std::fabs(c10) + std::fabs(c20), k1 = std::fabs(c01) + std::fabs(c11) + std::fabs(c21),
-	             k2 = std::fabs(c02) + std::fabs(c12) + std::fabs(c22);
+	double k[3];
+	for (int j = 0; j < 3; ++j)
+		k[j] = std::fabs(a.c[0][j]) + std::fabs(a.c[1][j]) + std::fabs(a.c[2][j]);
 	const double normJ = j0 > j1 ? (j0 > j2 ? j0 : j2) : (j1 > j2 ? j1 : j2);
-	const double normC = k0 > k1 ? (k0 > k2 ? k0 : k2) : (k1 > k2 ? k1 : k2);
-	const double inv = 1.0 / det;
-	const double rcond = std::fabs(det) / (normJ * normC);
-	if (!std::isfinite(rcond) || !std::isfinite(inv))
+	const double normC = k[0] > k[1] ? (k[0] > k[2] ? k[0] : k[2]) : (k[1] > k[2] ? k[1] : k[2]);
+	const double rcond = std::fabs(a.det) / (normJ * normC); // 1 / (‖J‖ · ‖adj J‖ / |det|)
+	if (!std::isfinite(rcond) || !std::isfinite(1.0 / a.det))
 		return out;
 	out.rcond = rcond;
-	out.x[0] = (c00 * r[0] + c01 * r[1] + c02 * r[2]) * inv;
-	out.x[1] = (c10 * r[0] + c11 * r[1] + c12 * r[2]) * inv;
-	out.x[2] = (c20 * r[0] + c21 * r[1] + c22 * r[2]) * inv;
+	ApplyAdjugate(a, r, out.x);
 	return out;
+}
+
+/// SolveBordered's solution alone, without the condition number: for a Jacobian within a small
+/// Newton step of one whose condition SolveBordered checked. False, x untouched, where det J is
+/// zero, not finite, or its inverse overflows.
+inline bool SolveBorderedSolution(double h11, double h12, double h22, double g1, double g2, double d1, double d2,
+                                  const double r[3], double x[3])
+{
+	const BorderedAdjugate a = AdjugateOfBordered(h11, h12, h22, g1, g2, d1, d2);
+	if (!(std::fabs(a.det) > 0.0) || !std::isfinite(1.0 / a.det))
+		return false;
+	ApplyAdjugate(a, r, x);
+	return true;
 }
 
 } // namespace b2a

@@ -1,0 +1,218 @@
+// b2analytic: the last Newton steps of two superellipses with integer exponents, on the raw
+// levels f (no gauge roots), and their contact points by Halley steps.
+#include "b2analytic/Contact.h"
+#include "contact/ResultChecks.h"
+#include "contact/SolverCore.h"
+#include "contact/WarmSlide.h"
+
+#include "b2analytic/SuperellipseShape.h"
+#include "geometry/SuperellipseTerms.h"
+#include "numerics/SmallLinear.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace b2a
+{
+
+namespace
+{
+// Both shapes at x (A's body frame, world lengths): f, ∇f and ∇²f of each in A's frame, and x in
+// B's body frame. B's derivatives are turned by r (B's axes in A's frame): ∇f ↦ R∇f and
+// diag(hx, hy) ↦ R diag(hx, hy) Rᵀ.
+struct PairDerivatives
+{
+	double fA, fB;
+	Vec2 gA, gB;
+	Sym22 hA, hB;
+	Vec2 xB;
+};
+
+inline void EvaluatePair(const SuperellipseTerms& ta, const SuperellipseTerms& tb, const Pose& rel, Vec2 x, PairDerivatives& e)
+{
+	const AxisDerivatives da = IntegerSuperellipseDerivatives(ta, x.x, x.y);
+	e.fA = da.f;
+	e.gA = Vec2(da.gx, da.gy);
+	e.hA = Sym22{da.hx, 0.0, da.hy};
+	e.xB = InvRotate(rel.q, x - rel.p);
+	const AxisDerivatives db = IntegerSuperellipseDerivatives(tb, e.xB.x, e.xB.y);
+	const double c = rel.q.c, s = rel.q.s;
+	e.fB = db.f;
+	e.gB = Rotate(rel.q, Vec2(db.gx, db.gy));
+	e.hB = Sym22{c * c * db.hx + s * s * db.hy, c * s * (db.hx - db.hy), s * s * db.hx + c * c * db.hy};
+}
+
+// Newton's quadratic regime, as the full solver tests it: a step `now` that is at rounding
+// (a tenth of the tolerance), or that contracted by 4 from `before` and leaves an error
+// K·now² (K ≈ now/before²) ten times below the tolerance (multiplied out: no division).
+inline bool Settled(double now, double before, double tolerance)
+{
+	return now <= 0.1 * tolerance ||
+	       (before > 0.0 && now < 0.25 * before && 10.0 * now * now * now <= tolerance * before * before);
+}
+} // namespace
+
+bool FinishApplies(const SuperellipseShape& a, const SuperellipseShape& b)
+{
+	return IntegerExponents(a.Terms()) && IntegerExponents(b.Terms());
+}
+
+bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                               const SolverOptions& options, Vec2 x, double mu, int priorIterations, WarmStart* warm,
+                               ContactResult& contact)
+{
+	// The common level solves ∇fA + μ∇fB = 0, fA = fB: at a common level the gauge ψ = f^{1/q}
+	// of the full solver (SolveSuperellipsePairLevel) has ψ'(fA) = ψ'(fB), so its equations have
+	// the same root and the same μ, and their warm starts are interchangeable. The gauge buys
+	// Newton a wide basin from a cold start; near the answer (a warm start: where the point went
+	// with both bodies and along the surfaces; a cold solve handed over once its steps are small)
+	// either form converges quadratically, and without the gauge an evaluation is a few products
+	// per shape: no roots, no divisions. So plain Newton steps, with no line search, trust region
+	// or fallback of their own: a step larger than 5 % of the size, one that does not contract
+	// by 4 as Newton does in its quadratic regime, a singular Jacobian or 4 steps without
+	// settling return false, and the caller's full solver decides (nothing is written before
+	// success).
+	const SuperellipseTerms &ta = a.Terms(), &tb = b.Terms();
+	if (!IntegerExponents(ta) || !IntegerExponents(tb) || !IsFinite(x))
+		return false;
+	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
+	const Pose rel = Relative(pa, pb);
+	PairDerivatives e;
+	EvaluatePair(ta, tb, rel, x, e);
+	// The least-squares multiplier at the start, −∇fA·∇fB/|∇fB|², off by the start's own error
+	// (a recorded one is off by the motion since).
+	const double gb2 = LengthSquared(e.gB);
+	const double muLs = gb2 > 0.0 ? -Dot(e.gA, e.gB) / gb2 : 0.0;
+	if (muLs > 0.0 && std::isfinite(muLs))
+		mu = muLs;
+	if (!(mu > 0.0) || !std::isfinite(mu))
+		return false;
+
+	const double tolerance = options.stepTolerance * size; // on the point, in world lengths
+	double previous = 0.0, previousMu = 0.0;                // the last step in x and in μ (0: none yet)
+	int iterations = 0;
+	for (int it = 1;; ++it)
+	{
+		if (it > 4)
+			return false;
+		iterations = it;
+		// Jacobian of (∇fA + μ∇fB, fA − fB) in (x, μ): [[HA + μHB, ∇fB], [(∇fA − ∇fB)ᵀ, 0]]. Its
+		// condition gets the full solver's test (rcond > 1e-14) at the start only: the later
+		// Jacobians lie within contracting steps (the first at most 5 % of the size) of it.
+		const double minusR[3] = {-(e.gA.x + mu * e.gB.x), -(e.gA.y + mu * e.gB.y), e.fB - e.fA};
+		const double hxx = e.hA.xx + mu * e.hB.xx, hxy = e.hA.xy + mu * e.hB.xy, hyy = e.hA.yy + mu * e.hB.yy;
+		const double dxA = e.gA.x - e.gB.x, dyA = e.gA.y - e.gB.y;
+		double delta[3];
+		if (it == 1)
+		{
+			const Solve3Result step = SolveBordered(hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA, minusR);
+			if (!(step.rcond > 1e-14))
+				return false;
+			std::copy(step.x, step.x + 3, delta);
+		}
+		else if (!SolveBorderedSolution(hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA, minusR, delta))
+			return false;
+		const Vec2 dx(delta[0], delta[1]);
+		const double dmu = delta[2];
+		// The steps in x (world lengths) and in μ; the bounds on μ's step are relative, so they
+		// are multiplied by μ (no division).
+		const double stepX = std::max(std::fabs(dx.x), std::fabs(dx.y)), stepMu = std::fabs(dmu);
+		if (!(stepX <= 0.05 * size) || !(stepMu <= 0.5 * mu))
+			return false; // not near the answer (or not finite)
+		if (previous > 0.0 && !(stepX <= 0.25 * previous || stepX <= tolerance))
+			return false; // not contracting: not in Newton's quadratic regime
+		if (previous > 0.0 && previous <= 1e-2 * size && Settled(stepX, previous, tolerance) &&
+		    Settled(stepMu, previousMu, options.stepTolerance * mu))
+		{
+			// The last step, taken without evaluating the shapes: f + ∇f·δ and ∇f + ∇²f·δ, exact to
+			// O(|δ|²), far below the tolerance here.
+			e.fA += Dot(e.gA, dx);
+			e.fB += Dot(e.gB, dx);
+			e.gA = e.gA + e.hA * dx;
+			e.gB = e.gB + e.hB * dx;
+			x = x + dx;
+			mu += dmu;
+			e.xB = InvRotate(rel.q, x - rel.p);
+			break;
+		}
+		x = x + dx;
+		mu += dmu;
+		EvaluatePair(ta, tb, rel, x, e);
+		if (stepX <= tolerance)
+			break;
+		previous = stepX;
+		previousMu = stepMu;
+	}
+	if (!(mu > 0.0))
+		return false;
+	// The gradients opposed (the full solver's test: unit normals within 1e-6 of −1 in their dot
+	// product), without the roots: ∇fA·∇fB < 0 and (∇fA·∇fB)² > (1 − 1e-6)²|∇fA|²|∇fB|².
+	const double ab = Dot(e.gA, e.gB), aa = LengthSquared(e.gA), bb = LengthSquared(e.gB);
+	if (!(ab < 0.0) || !(ab * ab > (1.0 - 2e-6) * aa * bb))
+		return false;
+
+	// The normal: A's outward and B's inward normals agree, ∇fA = −μ∇fB to rounding, and their
+	// weighted mean ∇fA − μ∇fB flips exactly when A and B swap (μ ↦ 1/μ).
+	const Vec2 sum = e.gA - mu * e.gB;
+	const double length = std::sqrt(LengthSquared(sum));
+	const Vec2 n = sum / length;
+	if (!IsFinite(n) || !(length > 0.0))
+		return false;
+	// The points: where the line through x along n leaves A last and enters B first (ContactFromLevel's
+	// rule), x itself where it lies on the surface to 1e-10 of the level.
+	const Vec2 nB = InvRotate(rel.q, -n);
+	const double knownA[3] = {e.fA, Dot(e.gA, n), Dot(n, e.hA * n)};
+	const double knownB[3] = {e.fB, -Dot(e.gB, n), Dot(n, e.hB * n)};
+	double tA = 0.0, tB = 0.0;
+	const bool onA = std::fabs(e.fA - 1.0) <= 1e-10 || IntegerFarCrossing(ta, x, n, knownA, std::min(a.A(), a.B()), tA) ||
+	                 SuperellipseFarCrossing(ta, x, n, tA);
+	const bool onB = onA && (std::fabs(e.fB - 1.0) <= 1e-10 ||
+	                         IntegerFarCrossing(tb, e.xB, nB, knownB, std::min(b.A(), b.B()), tB) ||
+	                         SuperellipseFarCrossing(tb, e.xB, nB, tB));
+	if (onB)
+	{
+		contact.status = SolveStatus::converged;
+		contact.method = SolveMethod::newton;
+		contact.failure = "";
+		contact.iterations = priorIterations + iterations;
+		contact.level = e.fA;
+		contact.point = ToWorld(pa, x);
+		contact.normal = Rotate(pa.q, n);
+		contact.pointA = ToWorld(pa, x + tA * n);
+		contact.pointB = ToWorld(pa, x - tB * n);
+		SetSeparation(contact, e.fA <= 1.0);
+	}
+	else
+	{
+		// The line misses a particle (far apart, elongated): ContactFromLevel's search and
+		// radial point, from the level solved here.
+		LevelResult level;
+		level.status = SolveStatus::converged;
+		level.method = SolveMethod::newton;
+		level.iterations = priorIterations + iterations;
+		level.level = e.fA;
+		level.point = ToWorld(pa, x);
+		level.normal = Rotate(pa.q, n);
+		level.multiplier = mu;
+		contact = ContactFromLevel(a, pa, b, pb, level, e.fA <= 1.0);
+	}
+
+	// The next warm start: the point in both frames, μ, and the slide (from f's derivatives: the
+	// curvatures and twists of the level curves, and so the slide, are the gauge's).
+	if (warm)
+	{
+		LevelSlide slide;
+		ComputeSlide(e.gA, e.hA, e.gB, e.hB, n, mu, 1.0, pa.q, slide);
+		warm->valid = true;
+		warm->hasPointB = true;
+		warm->localPoint = x;
+		warm->localPointB = e.xB;
+		warm->multiplier = mu;
+		warm->hasSlide = false;
+		if (slide.valid)
+			RecordSlide(warm, pa, pb, slide);
+	}
+	return true;
+}
+
+} // namespace b2a

@@ -1,0 +1,139 @@
+// The superellipse's inline terms for integer exponents (geometry/SuperellipseTerms.h):
+// IntegerSuperellipseDerivatives against RawSuperellipseDerivatives, and IntegerFarCrossing (the
+// Halley steps of the raw-level finish) against long-double bisection along the line.
+#include <doctest/doctest.h>
+
+#include "TestSupport.h"
+#include "b2analytic/SuperellipseShape.h"
+#include "geometry/SuperellipseTerms.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+using namespace b2a;
+using namespace b2a::test;
+
+TEST_CASE("superellipse terms: IntegerSuperellipseDerivatives is RawSuperellipseDerivatives, bit for bit, for integer exponents")
+{
+	// The same operations in the same order: every value equal, at random points of both signs,
+	// on the axes (where |X|^{n−2} is 0 or, for n = 2, 1) and far out.
+	Random rng(5);
+	int compared = 0;
+	for (int n : {2, 3, 4, 5, 6, 7, 8, 10, 12, 20})
+		for (int m : {2, 4, 7, 8})
+		{
+			const SuperellipseShape s(rng.LogUniform(0.1, 10.0), rng.LogUniform(0.1, 10.0), n, m);
+			const SuperellipseTerms& t = s.Terms();
+			REQUIRE(IntegerExponents(t));
+			for (int k = 0; k < 200; ++k)
+			{
+				Vec2 x(rng.Uniform(-2.0, 2.0) * s.A(), rng.Uniform(-2.0, 2.0) * s.B());
+				if (k % 10 == 0) x.x = 0.0;
+				if (k % 10 == 1) x.y = 0.0;
+				if (k % 10 == 2) x = -x;
+				const LevelDerivatives raw = RawSuperellipseDerivatives(t, x);
+				const AxisDerivatives fast = IntegerSuperellipseDerivatives(t, x.x, x.y);
+				CHECK(fast.f == raw.value);
+				CHECK(fast.gx == raw.gradient.x);
+				CHECK(fast.gy == raw.gradient.y);
+				CHECK(fast.hx == raw.hessian.xx);
+				CHECK(fast.hy == raw.hessian.yy);
+				++compared;
+			}
+		}
+	CHECK(compared == 8000);
+	// Real exponents and exponents below 2 are not integer terms.
+	CHECK_FALSE(IntegerExponents(SuperellipseShape(1.0, 1.0, 2.5, 4.0).Terms()));
+	CHECK_FALSE(IntegerExponents(SuperellipseShape(1.0, 1.0, 4.0, 1.0).Terms()));
+}
+
+TEST_CASE("superellipse terms: IntegerFarCrossing's Halley steps land on the far crossing, against long-double bisection")
+{
+	// The finish's case: a point near both surfaces (the common-level point, within a quarter of
+	// the size of the surface) and the line along the surface's normal there, with {f, f', f''}
+	// at the point given, as the level solve ends with them. Reference: bisection of
+	// f(x + t·d) − 1 in long double between the point of the line where f is lowest (inside) and
+	// far beyond. Every crossing it reports must be right to 1e-13 of the size; it may decline
+	// (false) only where the caller's search then decides, and does so rarely.
+	const std::vector<std::shared_ptr<SuperellipseShape>> shapes = {
+		std::make_shared<SuperellipseShape>(1.0, 0.6, 4.0, 4.0), std::make_shared<SuperellipseShape>(2.0, 0.5, 8.0, 8.0),
+		std::make_shared<SuperellipseShape>(1.0, 0.5, 4.0, 8.0), std::make_shared<SuperellipseShape>(0.8, 1.0, 12.0, 12.0),
+		std::make_shared<SuperellipseShape>(1.3, 0.4, 2.0, 2.0), std::make_shared<SuperellipseShape>(1.0, 0.7, 3.0, 5.0)};
+	Random rng(91);
+	int found = 0, declined = 0;
+	double worst = 0.0;
+	for (const auto& s : shapes)
+	{
+		CAPTURE(s->Describe());
+		const SuperellipseTerms& terms = s->Terms();
+		const long double a = s->A(), b = s->B(), n = s->N(), m = s->M();
+		auto level = [&](long double x, long double y) { return std::pow(std::fabs(x / a), n) + std::pow(std::fabs(y / b), m); };
+		const double size = std::max(s->A(), s->B()), unit = std::min(s->A(), s->B());
+		for (int i = 0; i < 300; ++i)
+		{
+			// A surface point, its normal (sometimes tilted, as the pair's mean normal may be), and
+			// the point moved along it by up to a quarter of the size either way.
+			const Vec2 q = s->SurfacePoint(rng.Angle());
+			const Vec2 d = Rotate(Rot(rng.Uniform(-0.2, 0.2)), Normalize(s->Gradient(q)));
+			const Vec2 x = q + rng.Uniform(-0.25, 0.25) * unit * d;
+			const LevelDerivatives at = RawSuperellipseDerivatives(terms, x);
+			const double known[3] = {at.value, Dot(at.gradient, d), d.x * d.x * at.hessian.xx + d.y * d.y * at.hessian.yy};
+			if (!(known[1] > 0.0))
+				continue;
+			double t = 0.0;
+			if (!IntegerFarCrossing(terms, x, d, known, unit, t))
+			{
+				++declined;
+				continue;
+			}
+			++found;
+			// The reference: the lowest point of the convex f along the line (golden sections), then
+			// bisection towards far beyond.
+			auto along = [&](long double u) { return level(x.x + u * d.x, x.y + u * d.y); };
+			long double lo = -4.0L * size, hi = 4.0L * size;
+			for (int k = 0; k < 300; ++k)
+			{
+				const long double m1 = lo + (hi - lo) * 0.381966L, m2 = hi - (hi - lo) * 0.381966L;
+				(along(m1) < along(m2) ? hi : lo) = (along(m1) < along(m2) ? m2 : m1);
+			}
+			long double inside = 0.5L * (lo + hi), beyond = 4.0L * size;
+			REQUIRE(along(inside) < 1.0L);
+			for (int k = 0; k < 300; ++k)
+			{
+				const long double mid = 0.5L * (inside + beyond);
+				(along(mid) < 1.0L ? inside : beyond) = mid;
+			}
+			worst = std::max(worst, double(std::fabs(inside - t)) / size);
+		}
+	}
+	CAPTURE(worst);
+	CAPTURE(declined);
+	CHECK(worst <= 1e-13);
+	CHECK(found >= 1700);
+	CHECK(declined <= found / 100);
+}
+
+TEST_CASE("superellipse terms: IntegerFarCrossing declines a line that misses the particle or runs inwards")
+{
+	const SuperellipseShape s(1.0, 0.6, 4.0, 4.0);
+	const SuperellipseTerms& terms = s.Terms();
+	auto known = [&](Vec2 x, Vec2 d, double out[3]) {
+		const LevelDerivatives at = RawSuperellipseDerivatives(terms, x);
+		out[0] = at.value;
+		out[1] = Dot(at.gradient, d);
+		out[2] = d.x * d.x * at.hessian.xx + d.y * d.y * at.hessian.yy;
+	};
+	double k[3], t = 0.0;
+	// Passing above the particle (y = 0.9 > b), along x: f' > 0 on the right, yet no crossing.
+	known(Vec2(0.2, 0.9), Vec2(1.0, 0.0), k);
+	CHECK_FALSE(IntegerFarCrossing(terms, Vec2(0.2, 0.9), Vec2(1.0, 0.0), k, 0.6, t));
+	// Moving inwards from outside (f' < 0): the far crossing lies behind, the caller's search's job.
+	known(Vec2(1.5, 0.0), Vec2(-1.0, 0.0), k);
+	CHECK_FALSE(IntegerFarCrossing(terms, Vec2(1.5, 0.0), Vec2(-1.0, 0.0), k, 0.6, t));
+	// For contrast, outwards from there: the crossing at x = 1, behind the point.
+	known(Vec2(1.5, 0.0), Vec2(1.0, 0.0), k);
+	REQUIRE(IntegerFarCrossing(terms, Vec2(1.5, 0.0), Vec2(1.0, 0.0), k, 0.6, t));
+	CHECK(std::fabs(t + 0.5) <= 1e-15);
+}
