@@ -358,6 +358,9 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 	// exp(α·|cx − cy|), infinite for exponents near 1 or directions near an axis).
 	const double ax = m_n / (m_n - 1.0), ay = m_m / (m_m - 1.0);
 	const double cx = std::log(std::fabs(e.x) / m_n), cy = std::log(std::fabs(e.y) / m_m);
+	// Stop at a step of 4e-16 |s|, two units in the last place: a bound of 1e-16, below s's own
+	// resolution, let 7 % of directions (n = 4, m = 8) bounce between neighbouring doubles until
+	// the cap, 100 steps of two exponentials where 6 suffice.
 	double s = std::max(cx, cy);
 	for (int it = 0; it < 100; ++it)
 	{
@@ -366,7 +369,7 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 		const double dg = -ax * tx - ay * ty;
 		const double step = g / dg;
 		s -= step;
-		if (!(std::fabs(step) > 1e-16 * std::max(1.0, std::fabs(s))))
+		if (!(std::fabs(step) > 4e-16 * std::max(1.0, std::fabs(s))))
 			break;
 	}
 	const double X = std::exp((cx - s) / (m_n - 1.0));
