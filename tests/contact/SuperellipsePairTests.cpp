@@ -440,6 +440,33 @@ TEST_CASE("superellipse pairs: blocky pairs start cold from their boxes' contact
 		CHECK(worst.level <= 1e-10);
 		CHECK(double(iterations) / double(pairs.size()) <= 4.5);
 	}
+	// Mixed exponents of 3 or more, n ≠ m within a shape and between the shapes: the same start,
+	// the supports from their Lagrange roots. Measured over these pairs: 5.23 Newton steps on
+	// average from the boxes, 5.57 from the centre line (where one pair's points also differed
+	// from the generic Newton's by more than 1e-12 of the size).
+	const auto mixed = Pairs(9191, 60, {3.0, 4.0, 6.0, 8.0});
+	Worst worst;
+	int iterations = 0, unequal = 0;
+	for (const Pair& p : mixed)
+	{
+		INFO(p.a->Describe() << " vs " << p.b->Describe());
+		unequal += p.a->N() != p.a->M() || p.b->N() != p.b->M() || p.a->N() != p.b->N();
+		const ContactResult c = ComputeContact(*p.a, p.pa, *p.b, p.pb);
+		REQUIRE(c.Ok());
+		CHECK(c.status == SolveStatus::converged);
+		iterations += c.iterations;
+		const ContactResult g = ComputeContact(*p.a, p.pa, *p.b, p.pb, MethodChoice::newton);
+		REQUIRE(g.Ok());
+		CHECK(MaxDiff(c.pointA, g.pointA) <= 1e-12 * Size(p));
+		CHECK(MaxDiff(c.pointB, g.pointB) <= 1e-12 * Size(p));
+		worst.Add(c, Reference(p), Size(p));
+	}
+	CAPTURE(worst.point);
+	CAPTURE(worst.level);
+	CHECK(unequal >= 55);
+	CHECK(worst.point <= 1e-9);
+	CHECK(worst.level <= 1e-10);
+	CHECK(double(iterations) / double(mixed.size()) <= 5.4);
 }
 
 namespace

@@ -313,7 +313,9 @@ double SuperellipseShape::SupportValue(Vec2 d) const
 	return emax * std::pow(std::pow(ex / emax, q) + std::pow(ey / emax, q), 1.0 / q);
 }
 
-Vec2 SuperellipseShape::Support(Vec2 d) const
+Vec2 SuperellipseShape::Support(Vec2 d) const { return SupportNear(d, 100); }
+
+Vec2 SuperellipseShape::SupportNear(Vec2 d, int lagrangeSteps) const
 {
 	// In scaled coordinates X = x/a, Y = y/b the support of the unit p-ball along e = (a·dx, b·dy).
 	Vec2 e(m_a * d.x, m_b * d.y);
@@ -362,7 +364,7 @@ Vec2 SuperellipseShape::Support(Vec2 d) const
 	// resolution, let 7 % of directions (n = 4, m = 8) bounce between neighbouring doubles until
 	// the cap, 100 steps of two exponentials where 6 suffice.
 	double s = std::max(cx, cy);
-	for (int it = 0; it < 100; ++it)
+	for (int it = 0; it < lagrangeSteps; ++it)
 	{
 		const double tx = std::exp(ax * (cx - s)), ty = std::exp(ay * (cy - s));
 		const double g = tx + ty - 1.0;
