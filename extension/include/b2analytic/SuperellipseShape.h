@@ -48,9 +48,11 @@ public:
 	double RadiusAt(Vec2 u, double level) const override;
 	Vec2 Support(Vec2 d) const override;
 	/// Support with its Lagrange root (n ≠ m) cut after `lagrangeSteps` Newton steps, for a
-	/// solver's start: after three (half the exact root's six) the level there is within 2e-4 of
-	/// the surface's; closed forms (n = m) and axis directions exact. Support(d) is
-	/// SupportNear(d, 100): the steps stop once they reach rounding.
+	/// solver's start. Every point on the way has its normal along d; the steps start on the side
+	/// of the bounding box (zero steps: the point there, one of |x/a|, |y/b| equal to 1) and
+	/// descend onto the surface (three steps, half the exact root's six: the level within 2e-4 of
+	/// 1). Closed forms (n = m) and axis directions are exact. Support(d) is SupportNear(d, 100):
+	/// the steps stop once they reach rounding.
 	Vec2 SupportNear(Vec2 d, int lagrangeSteps) const;
 	/// For n = m the dual norm h = ‖(a·dx, b·dy)‖_q, q = n/(n − 1) (Hölder), without the point's
 	/// divisions: two cube roots and two square roots at n = 4. Otherwise Support(d)·d.

@@ -144,8 +144,8 @@ bool CentreLineStart(const PairInA& p, double& t)
 // bounding boxes. Scaled about their centres by s, two boxes touch where s first reaches the
 // largest, over the four face normals u of the two boxes, of |c·u| / (hA(u) + hB(u)), h the box's
 // half-width along u (the separating-axis test, solved for the scale). If u is a face normal of
-// A, B's point that touches it is B's support point against u (SuperellipseShape::Support:
-// closed forms for n = m, three Newton steps on its Lagrange condition otherwise), scaled by s
+// A, B's point that touches it is B's support point against u (SuperellipseShape::Support in
+// closed form for n = m; for n ≠ m the point of B's box side with its normal along u, below), scaled by s
 // about B's centre, and the other way round for a face of B. Blocky superellipses are nearly
 // their boxes, and a corner meeting a face is the common contact: from there Newton needs 3.9
 // iterations for n = 8 over 600 random poses where the centre-line start needs 5.4 (n = 4: 4.2
@@ -175,8 +175,12 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 	}
 	const Vec2 u = Dot(p.c, axes[face]) < 0.0 ? -axes[face] : axes[face]; // from A towards B
 	const double k = scale / size; // the support points are in body units, ξ in the pair's
-	// (A start: for n ≠ m the supports' Lagrange roots to three Newton steps, SupportNear.)
-	xi = face < 2 ? p.c + k * Rotate(p.r, b.SupportNear(InvRotate(p.r, -u), 3)) : k * a.SupportNear(u, 3);
+	// For n ≠ m, not the support point itself but SupportNear's start for it: the point on the
+	// side of the bounding box where the level curve's normal is along the direction, no Newton
+	// step. As a start it is at least as good and cheaper (800 bench-like cold n = 4, m = 8
+	// contacts: 4.52 iterations and 5,110 instructions each, against 4.73 and 6,030 with the
+	// exact support, and 4.73 and 5,740 with three steps towards it).
+	xi = face < 2 ? p.c + k * Rotate(p.r, b.SupportNear(InvRotate(p.r, -u), 0)) : k * a.SupportNear(u, 0);
 	return scale > 0.0 && IsFinite(xi);
 }
 
