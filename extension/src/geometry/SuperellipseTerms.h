@@ -203,11 +203,12 @@ inline bool SuperellipseFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, 
 /// small fraction of the size of both surfaces, where g is a smooth polynomial in t and Halley's
 /// cubic convergence takes one step from the known values and one from an evaluation: the error
 /// after a step δ is about K·|δ|³ with K ≈ |δ|/|δ_before|³, so a step whose predecessor was small
-/// (1e-3 of `unit`) and that contracted tenfold ends the search when 10·K·|δ|³ is below the
+/// (5e-2 of `unit`) and that contracted tenfold ends the search when K·|δ|³ is below the
 /// tolerance (1e-15 of |t| + unit; `unit` is the particle's smaller semi-axis). Where g·g'' is
 /// large against g'² (far outside) the step is Newton's, which descends onto the far crossing
 /// of the convex g from outside. False where g' ≤ 0 (the line misses or runs along the
-/// particle) or it does not settle in 8 steps: the caller takes SuperellipseFarCrossing.
+/// particle), a step would leave 4 units, or it does not settle in 8 steps: the caller takes
+/// SuperellipseFarCrossing.
 inline bool IntegerFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit, double& t)
 {
 	const double X = x.x * s.invA, Y = x.y * s.invB, D = d.x * s.invA, E = d.y * s.invB;
