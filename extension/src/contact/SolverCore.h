@@ -28,6 +28,21 @@ struct LevelSlide
 /// Writes a valid solve's slide into a warm start (RecordWarmStart's part for the slide).
 void RecordSlide(WarmStart* warm, const Pose& pa, const Pose& pb, const LevelSlide& slide);
 
+/// Records a solution as the next warm start from the point already in both bodies' frames
+/// (inA, inB), its multiplier μ > 0, and the slide where the solver computed a valid one.
+inline void RecordWarmStartLocal(WarmStart& warm, const Pose& pa, const Pose& pb, Vec2 inA, Vec2 inB, double multiplier,
+                                 const LevelSlide* slide)
+{
+	warm.valid = true;
+	warm.hasPointB = true;
+	warm.hasSlide = false;
+	warm.localPoint = inA;
+	warm.localPointB = inB;
+	warm.multiplier = multiplier;
+	if (slide && slide->valid)
+		RecordSlide(&warm, pa, pb, *slide);
+}
+
 /// Records a solved level as the next warm start (the point in both bodies' frames, the
 /// multiplier, and the slide where the solver computed a valid one); a failed solve, or one
 /// without a positive multiplier, invalidates it.
@@ -36,16 +51,12 @@ inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, con
 {
 	if (!warm)
 		return;
-	warm->valid = level.Ok() && level.multiplier > 0.0;
-	warm->hasPointB = warm->valid;
-	warm->hasSlide = false;
-	if (!warm->valid)
+	if (!(level.Ok() && level.multiplier > 0.0))
+	{
+		warm->valid = warm->hasPointB = warm->hasSlide = false;
 		return;
-	warm->localPoint = ToBody(pa, level.point);
-	warm->localPointB = ToBody(pb, level.point);
-	warm->multiplier = level.multiplier;
-	if (slide && slide->valid)
-		RecordSlide(warm, pa, pb, *slide);
+	}
+	RecordWarmStartLocal(*warm, pa, pb, ToBody(pa, level.point), ToBody(pb, level.point), level.multiplier, slide);
 }
 
 class SuperellipseShape;

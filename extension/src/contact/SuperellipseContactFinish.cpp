@@ -203,14 +203,7 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 	{
 		LevelSlide slide;
 		ComputeSlide(e.gA, e.hA, e.gB, e.hB, n, mu, 1.0, pa.q, slide);
-		warm->valid = true;
-		warm->hasPointB = true;
-		warm->localPoint = x;
-		warm->localPointB = e.xB;
-		warm->multiplier = mu;
-		warm->hasSlide = false;
-		if (slide.valid)
-			RecordSlide(warm, pa, pb, slide);
+		RecordWarmStartLocal(*warm, pa, pb, x, e.xB, mu, &slide);
 	}
 	return true;
 }
