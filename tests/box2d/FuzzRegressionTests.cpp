@@ -140,3 +140,34 @@ TEST_CASE("a small particle far from its body's centre is refused by 'local' onl
 	CHECK(std::fabs(dumbbell->GetLocalCenter().x) < 1e-3f);
 	CHECK(double(dumbbell->GetInertia()) == doctest::Approx(8.0 / 3.0 + 2.0 * area * (300.0 * 300.0 + 0.005)).epsilon(1e-5));
 }
+
+TEST_CASE("fuzz regression: fixture contacts between superellipses on turned bodies have unit normals")
+{
+	// The world fuzzer (CI, seed 1, b2a_fuzz_world) found a fixture contact whose normal was off
+	// unit length by more than 1e-9: two n = 4 superellipses (a = b = 1.5567) overlapping on
+	// turned bodies. A body's b2Rot holds a float cosine and sine, so the pose built from it is
+	// off unit length by up to about 6e-8, and the raw-level finish turned its normal into the
+	// world with that rotation. (The input's bytes were not kept; these are poses of that class.)
+	b2World world(b2Vec2(0.0f, 0.0f));
+	const ShapePtr square = MakeSuperellipse(1.55672533409036, 1.55672533409036, 4.0, 4.0);
+	double worstRotation = 0.0, worstNormal = 0.0;
+	int contacts = 0;
+	for (int k = 0; k < 24; ++k)
+	{
+		b2Body* a = MakeParticle(world, square, 0.3f * float(k), 0.0f, 0.37f * float(k) - 3.0f);
+		b2Body* b = MakeParticle(world, square, 0.3f * float(k) + 2.0f, 0.4f, 0.23f * float(k) + 1.0f);
+		const b2Rot q = a->GetTransform().q;
+		worstRotation = std::max(worstRotation, std::fabs(std::hypot(double(q.c), double(q.s)) - 1.0));
+		const ContactResult c = ComputeFixtureContact(a->GetFixtureList(), b->GetFixtureList());
+		REQUIRE(c.Ok());
+		++contacts;
+		worstNormal = std::max(worstNormal, std::fabs(Length(c.normal) - 1.0));
+		world.DestroyBody(a);
+		world.DestroyBody(b);
+	}
+	CAPTURE(worstRotation);
+	CAPTURE(worstNormal);
+	CHECK(contacts == 24);
+	CHECK(worstRotation > 1e-8); // float rotations, as Box2D keeps them
+	CHECK(worstNormal <= 1e-15);
+}

@@ -384,10 +384,14 @@ TEST_CASE("statuses and failure strings are sensible")
 		CHECK(AllFinite(r));
 	}
 	CHECK(Contains(SolveCommonLevelMinMax(*heart, pa, *ellipse, pb).failure, "smooth"));
-	// The common level needs convex shapes.
-	for (MethodChoice m : {MethodChoice::automatic, MethodChoice::grid})
+	// The common level needs convex shapes, through the automatic path and from the grid solver
+	// called directly (which once answered level 0 with a zero normal for an ellipse whose centre
+	// lay inside a heart: the first pose below).
+	const Pose inside(Vec2(0.1049, -0.1332), -2.6750), heartPose(Vec2(0.0, 0.0), -3.0921);
+	for (const LevelResult& r : {SolveCommonLevel(*heart, pa, *ellipse, pb, MethodChoice::automatic),
+	                             SolveCommonLevel(*heart, pa, *ellipse, pb, MethodChoice::grid), SolveCommonLevelGrid(*heart, pa, *ellipse, pb),
+	                             SolveCommonLevelGrid(*ellipse, pa, *heart, pb), SolveCommonLevelGrid(*ellipse, inside, *heart, heartPose)})
 	{
-		const LevelResult r = SolveCommonLevel(*heart, pa, *ellipse, pb, m);
 		CHECK_FALSE(r.Ok());
 		CHECK(Contains(r.failure, "convex"));
 		CHECK(AllFinite(r));

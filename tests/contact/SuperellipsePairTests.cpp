@@ -580,3 +580,51 @@ TEST_CASE("superellipse pairs: the raw-level finish declines a start far from th
 	CHECK_FALSE(FinishSuperellipseContact(*sa, pa, SuperellipseShape(1.0, 0.5, 2.5, 4.0), after, {}, Vec2(0.8, 0.1), 1.0, 0,
 	                                      nullptr, c));
 }
+
+TEST_CASE("superellipse pairs: poses with Box2D's float rotations give unit normals, cold and warm")
+{
+	// The Box2D adapter builds poses from b2Rot, whose float cosine and sine are off unit length
+	// by up to about 6e-8. The finish solves in A's frame and turned its unit normal into the world
+	// with pa.q, so the normal was off unit length by as much (found by the world fuzzer); it is
+	// now normalised after the turn, as ContactFromLevel's is.
+	auto floatRot = [](double angle) {
+		// As b2Rot(float) makes it: cosf and sinf of the float angle. (Not float(std::cos(angle)):
+		// GCC 12 at -O2 folds cos and sin into one sincos and drops the conversion to float.)
+		const float c = std::cos(float(angle)), s = std::sin(float(angle));
+		Rot q;
+		q.c = c;
+		q.s = s;
+		return q;
+	};
+	const auto pairs = Pairs(2718, 60, {2.0, 3.0, 4.0, 6.0, 8.0});
+	double worstRotation = 0.0, worstNormal = 0.0, worstLevelNormal = 0.0;
+	int contacts = 0;
+	for (const Pair& start : pairs)
+	{
+		INFO(start.a->Describe() << " vs " << start.b->Describe());
+		Pair p = start;
+		p.pa.q = floatRot(start.pa.q.Angle());
+		WarmStart warm;
+		for (int step = 0; step < 4; ++step)
+		{
+			p.pb = Pose(start.pb.p + double(step) * 1e-3 * Size(p) * Vec2(0.6, -0.8), Rot());
+			p.pb.q = floatRot(start.pb.q.Angle() + double(step) * 1e-3);
+			worstRotation = std::max({worstRotation, std::fabs(std::hypot(p.pa.q.c, p.pa.q.s) - 1.0),
+			                          std::fabs(std::hypot(p.pb.q.c, p.pb.q.s) - 1.0)});
+			const ContactResult c = ComputeContact(*p.a, p.pa, *p.b, p.pb, MethodChoice::automatic, {}, &warm);
+			REQUIRE(c.Ok());
+			++contacts;
+			worstNormal = std::max(worstNormal, std::fabs(Length(c.normal) - 1.0));
+			const LevelResult level = SolveCommonLevel(*p.a, p.pa, *p.b, p.pb);
+			REQUIRE(level.Ok());
+			worstLevelNormal = std::max(worstLevelNormal, std::fabs(Length(level.normal) - 1.0));
+		}
+	}
+	CAPTURE(worstRotation);
+	CAPTURE(worstNormal);
+	CAPTURE(worstLevelNormal);
+	CHECK(contacts == 240);
+	CHECK(worstRotation > 1e-8); // the rotations are Box2D's: not unit to double precision
+	CHECK(worstNormal <= 1e-15);
+	CHECK(worstLevelNormal <= 1e-15);
+}

@@ -34,7 +34,8 @@ LevelResult SolveCommonLevelMinMax(const Shape& a, const Pose& pa, const Shape& 
 
 /// Common level by the grid method: the fixed point C = g(C), where g(C) is the smallest level of
 /// A on B's level-C surface (SolveGridScale). g decreases, so the fixed point is bracketed by 1
-/// and g(1) and found by Brent's method. Works for any convex shapes, smooth or not.
+/// and g(1) and found by Brent's method. Works for any convex shapes, smooth or not; fails with a
+/// clear reason for non-convex ones (use SolveScaleA).
 LevelResult SolveCommonLevelGrid(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                                  const SolverOptions& options = {});
 

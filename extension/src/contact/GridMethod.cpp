@@ -551,6 +551,15 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 
 LevelResult SolveCommonLevelGrid(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)
 {
+	if (!a.IsConvex() || !b.IsConvex())
+	{
+		// A non-convex level (the heart's) is not star-shaped about the centre: its level-C sets
+		// need not nest, and the fixed point can land on A's centre with no normal there.
+		LevelResult r;
+		r.method = SolveMethod::grid;
+		r.failure = "the common level needs convex shapes; use the one-sided scale (scale_a) for non-convex ones";
+		return r;
+	}
 	if (CentresCoincide(a, pa, b, pb))
 	{
 		LevelResult r;

@@ -78,13 +78,7 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 		r = SolveCommonLevelNewton(a, pa, b, pb, options, warm, keep);
 		break;
 	case MethodChoice::grid:
-		if (!convex)
-		{
-			r.method = SolveMethod::grid;
-			r.failure = "the common level needs convex shapes; use the one-sided scale (scale_a) for non-convex ones";
-			return r;
-		}
-		r = SolveCommonLevelGrid(a, pa, b, pb, options);
+		r = SolveCommonLevelGrid(a, pa, b, pb, options); // refuses non-convex shapes itself
 		break;
 	default:
 		const SuperellipseShape* ea = AsPlainEllipse(a);

@@ -169,6 +169,9 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 	const bool onB = onA && (std::fabs(e.fB - 1.0) <= 1e-10 ||
 	                         IntegerFarCrossing(tb, e.xB, nB, knownB, std::min(b.A(), b.B()), tB) ||
 	                         SuperellipseFarCrossing(tb, e.xB, nB, tB));
+	// The world normal is normalised after the turn, as ContactFromLevel's is: a pose built from
+	// Box2D's float rotation is off unit length by up to 1e-7, and so would be Rotate(pa.q, n).
+	const Vec2 normal = Normalize(Rotate(pa.q, n));
 	if (onB)
 	{
 		contact.status = SolveStatus::converged;
@@ -177,7 +180,7 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 		contact.iterations = priorIterations + iterations;
 		contact.level = e.fA;
 		contact.point = ToWorld(pa, x);
-		contact.normal = Rotate(pa.q, n);
+		contact.normal = normal;
 		contact.pointA = ToWorld(pa, x + tA * n);
 		contact.pointB = ToWorld(pa, x - tB * n);
 		SetSeparation(contact, e.fA <= 1.0);
@@ -192,7 +195,7 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 		level.iterations = priorIterations + iterations;
 		level.level = e.fA;
 		level.point = ToWorld(pa, x);
-		level.normal = Rotate(pa.q, n);
+		level.normal = normal;
 		level.multiplier = mu;
 		contact = ContactFromLevel(a, pa, b, pb, level, e.fA <= 1.0);
 	}

@@ -429,7 +429,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	result.failure = "";
 	result.level = q.A.lambda;
 	result.point = ToWorld(pa, size * q.xi);
-	result.normal = Rotate(pa.q, nA);
+	result.normal = Normalize(Rotate(pa.q, nA)); // unit even where pa.q is not quite (float poses)
 	result.multiplier = q.mu;
 	if (at)
 	{
