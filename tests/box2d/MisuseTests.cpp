@@ -82,6 +82,13 @@ TEST_CASE("bad fixture definitions are refused with the field and value named; t
 		{"'shape'", [](b2FixtureDef&, AnalyticFixtureDef& a) { a.shape = nullptr; }},
 		// A particle too large for Box2D's float mass data (the mass would overflow to inf).
 		{"'shape'", [](b2FixtureDef& d, AnalyticFixtureDef& a) { a.shape = MakeCircle(1e18); d.density = 1.0f; }},
+		// Particles reaching farther from the body origin than Box2D's float positions resolve its
+		// slop (4194 length units): a circle of radius 5000, a needle 1e12 long, and a small
+		// ellipse 4200 from the origin (the first two made b2TimeOfImpact assert in the world
+		// fuzzer, next to a circle of radius 1e8).
+		{"'shape'", [](b2FixtureDef&, AnalyticFixtureDef& a) { a.shape = MakeCircle(5000.0); }},
+		{"'shape'", [](b2FixtureDef&, AnalyticFixtureDef& a) { a.shape = MakeSuperellipse(0.02794076275822616, 1e12, 9.0, 9.0); }},
+		{"'local'", [](b2FixtureDef&, AnalyticFixtureDef& a) { a.local = Pose(Vec2(4200.0, 0.0), 0.0); }},
 		// A needle so thin that its mass underflows float (Box2D's ResetMassData asserted; found by
 		// the world fuzzer).
 		{"'shape'", [](b2FixtureDef&, AnalyticFixtureDef& a) { a.shape = MakeEllipse(0.49941661749807853, 6.5732409498342358e-40); }},
@@ -97,6 +104,21 @@ TEST_CASE("bad fixture definitions are refused with the field and value named; t
 		CAPTURE(message);
 		CHECK(Has(message, c.field));
 		CHECK(body->GetFixtureList() == nullptr);
+	}
+
+	// Within the reach a large particle is taken: a static circle of radius 4000 (Box2D's own
+	// advice is at most 50 length units for static shapes, but its float positions still resolve
+	// a tenth of the slop there).
+	{
+		b2World big(b2Vec2(0.0f, -10.0f));
+		b2BodyDef groundDef;
+		b2Body* ground = big.CreateBody(&groundDef);
+		CHECK(CreateAnalyticFixture(ground, MakeCircle(4000.0), 0.0f) != nullptr);
+		AnalyticFixtureDef near;
+		near.shape = MakeCircle(1.0);
+		near.local = Pose(Vec2(4190.0, 0.0), 0.0);
+		b2FixtureDef fd;
+		CHECK(CreateAnalyticFixture(ground, fd, near) != nullptr);
 	}
 
 	// A body whose own pose is not finite (set by the user) cannot get a fixture: its AABB

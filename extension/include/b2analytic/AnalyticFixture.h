@@ -109,8 +109,10 @@ struct AnalyticFixtureDef
 /// restitution, restitution threshold, filter, sensor flag, user data) except `def.shape`,
 /// which must be null: the analytic shape takes its place. With density > 0 the body's mass
 /// data comes from the analytic area, centroid and second moment. Throws InvalidParameter for a
-/// missing shape, a non-null def.shape, a shape too small for Box2D's tolerances or too large for
-/// its float mass data, a non-finite local pose or body pose, a negative or non-finite density,
+/// missing shape, a non-null def.shape, a shape too small for Box2D's tolerances (bounding radius
+/// under 0.01) or too large for its float positions (bounding radius plus |local.p| over 4194
+/// length units, where a float coordinate is coarser than a tenth of the linear slop) or mass
+/// data, a non-finite local pose or body pose, a negative or non-finite density,
 /// friction, restitution or restitution threshold, and MisuseError for a null body or a locked
 /// world (see "What is allowed" above). `body` must be a live body of a live world.
 b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const AnalyticFixtureDef& analytic);

@@ -14,6 +14,7 @@
 #include <box2d/b2_world.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -162,8 +163,24 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 		throw InvalidParameter("CreateAnalyticFixture", "shape", "must be at least 2 * b2_linearSlop (0.01 length units) in bounding radius "
 		                       "(use smaller length units), bounding radius",
 		                       shape.BoundingRadius());
-	// Box2D keeps mass data in float: mass and the moment about the body origin must not overflow.
+	// Box2D's positions, proxies and distance queries are float: beyond reach·FLT_EPSILON = 0.1 of
+	// its linear slop (4194 length units from the body origin) a float coordinate of the particle
+	// is coarser than its tolerances, and its time of impact breaks (a 0.028 × 1e12 needle beside
+	// a circle of radius 1e8 made b2TimeOfImpact assert, found by the world fuzzer).
 	const double reach = shape.BoundingRadius() + Length(local.p);
+	const double farthest = 0.1 * double(b2_linearSlop) / double(FLT_EPSILON);
+	if (!(shape.BoundingRadius() <= farthest))
+		throw InvalidParameter("CreateAnalyticFixture", "shape",
+		                       "is too large for Box2D's float positions (the bounding radius must be at most "
+		                       "0.1 * b2_linearSlop / FLT_EPSILON, 4194 length units: use larger length units), bounding radius",
+		                       shape.BoundingRadius());
+	if (!(reach <= farthest))
+		throw InvalidParameter("CreateAnalyticFixture", "local",
+		                       "puts the particle too far from the body origin for Box2D's float positions (bounding "
+		                       "radius plus |local.p| must be at most 0.1 * b2_linearSlop / FLT_EPSILON, 4194 length "
+		                       "units), bounding radius plus |local.p|",
+		                       reach);
+	// Box2D keeps mass data in float: mass and the moment about the body origin must not overflow.
 	const double moment = double(def.density) * shape.Mass().area * reach * reach;
 	const double most = std::numeric_limits<float>::max(); // compared in double: a cast out of range is undefined
 	if (!(reach < most && moment < most))
