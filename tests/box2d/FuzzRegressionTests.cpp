@@ -171,3 +171,58 @@ TEST_CASE("fuzz regression: fixture contacts between superellipses on turned bod
 	CHECK(worstRotation > 1e-8); // float rotations, as Box2D keeps them
 	CHECK(worstNormal <= 1e-15);
 }
+
+TEST_CASE("fuzz regression: particles too large for float positions are refused, and Box2D's time of impact never meets them")
+{
+	// The world fuzzer (CI's re-run, seed 1; tests/fuzz/corpus/world/crash-huge_particles_time_of_impact)
+	// made b2TimeOfImpact assert (b2SeparationFunction::Initialize, 0 < count < 3): two bullet
+	// bodies in one place, one holding a superellipse 0.028 by 1e12, the other a circle of radius
+	// 1e8. At those sizes a float coordinate is far coarser than Box2D's linear slop. Both are now
+	// refused by 'shape'; the decoded scene then steps as it should (here, 40 steps as the input's).
+	b2World world(b2Vec2(-9.0f, -9.0f));
+	auto bullet = [&] {
+		b2BodyDef def;
+		def.type = b2_dynamicBody;
+		def.position.Set(-9.80392f, -9.80392f);
+		def.angle = -1.54f;
+		def.linearVelocity.Set(-24.5098f, -24.5098f);
+		def.angularVelocity = -14.7059f;
+		def.bullet = true;
+		return world.CreateBody(&def);
+	};
+	auto add = [](b2Body* body, ShapePtr shape, Pose local, float density) {
+		b2FixtureDef def;
+		def.density = density;
+		AnalyticFixtureDef analytic;
+		analytic.shape = std::move(shape);
+		analytic.local = local;
+		try
+		{
+			CreateAnalyticFixture(body, def, analytic);
+		}
+		catch (const InvalidParameter& e)
+		{
+			return std::string(e.what());
+		}
+		return std::string();
+	};
+	b2Body* first = bullet();
+	const std::string needle = add(first, MakeSuperellipse(0.02794076275822616, 1e12, 9.0, 9.0), Pose(Vec2(7.6e-5, -0.905), 1.4e-4), 1.27451f);
+	CHECK(add(first, SuperellipseShape::FromZeta(0.50551551379430748, 0.027477254378009516, 1.9019607843137254),
+	          Pose(Vec2(-0.490196, -0.490196), -1.54), 0.00488289f)
+	          .empty());
+	b2Body* second = bullet();
+	const std::string huge = add(second, MakeCircle(1e8), Pose(Vec2(0.601343, -0.56408), 0.891784), 1.27527f);
+	CAPTURE(needle);
+	CAPTURE(huge);
+	CHECK(needle.find("'shape'") != std::string::npos);
+	CHECK(huge.find("'shape'") != std::string::npos);
+	CHECK(second->GetFixtureList() == nullptr);
+	b2CircleShape ball; // a Box2D circle in the refused one's place, so that the bullets meet
+	ball.m_radius = 0.5f;
+	second->CreateFixture(&ball, 1.0f);
+	for (int i = 0; i < 40; ++i)
+		world.Step(1.0f / 60.0f, 8, 3);
+	CHECK(std::isfinite(first->GetPosition().x));
+	CHECK(std::isfinite(second->GetPosition().x));
+}
