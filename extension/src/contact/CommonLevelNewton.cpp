@@ -104,9 +104,10 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 		const Sym22 H = p.A.hess + mu * p.B.hess;
 		const Vec2 dmu = mu * p.B.grad;
 		const Vec2 row3 = p.A.grad - p.B.grad;
-		const double J[3][3] = {{H.xx, H.xy, dmu.x}, {H.xy, H.yy, dmu.y}, {row3.x, row3.y, 0.0}};
+		// J = [[H, μ∇ψB], [(∇ψA − ∇ψB)ᵀ, 0]]: bordered, solved with its zero and symmetry written out
+		// (the same cofactors, solution and rcond as Solve3's, in about half the operations).
 		const double minusR[3] = {-p.r[0], -p.r[1], -p.r[2]};
-		const Solve3Result step = Solve3(J, minusR);
+		const Solve3Result step = SolveBordered(H.xx, H.xy, H.yy, dmu.x, dmu.y, row3.x, row3.y, minusR);
 		if (!(step.rcond > 1e-14))
 		{
 			if (p.relative < 1e-11)

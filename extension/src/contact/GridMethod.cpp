@@ -3,6 +3,7 @@
 
 #include "contact/LevelAlongLine.h"
 #include "contact/PairFrame.h"
+#include "contact/SolverCore.h"
 #include "numerics/RootFinding.h"
 #include "numerics/SmallLinear.h"
 
@@ -80,6 +81,7 @@ bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, doubl
 	const double tolerance = 1e-13 * (Length(start) + reach);
 	double mu = 0.0;
 	bool first = true;
+	double previous = 0.0, previousMu = 0.0; // the last step in y and in μ (0: none yet)
 	for (int it = 0; it < 12; ++it)
 	{
 		++walk.evaluations;
@@ -98,9 +100,9 @@ bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, doubl
 		const double curvature = t.x * (H.xx * t.x + H.xy * t.y) + t.y * (H.xy * t.x + H.yy * t.y);
 		if (!(curvature > 0.0) || !std::isfinite(curvature))
 			return false;
-		const double J[3][3] = {{H.xx, H.xy, gB.x}, {H.xy, H.yy, gB.y}, {gB.x, gB.y, 0.0}};
+		// J = [[H, ∇λB], [∇λBᵀ, 0]]: bordered (SolveBordered: Solve3's answer in half the operations).
 		const double r[3] = {-(dA.gradient.x + mu * gB.x), -(dA.gradient.y + mu * gB.y), -(dB.value - walk.levelB)};
-		const Solve3Result s = Solve3(J, r);
+		const Solve3Result s = SolveBordered(H.xx, H.xy, H.yy, gB.x, gB.y, gB.x, gB.y, r);
 		if (!(s.rcond > 1e-14))
 			return false;
 		const Vec2 step(s.x[0], s.x[1]);
@@ -109,7 +111,11 @@ bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, doubl
 			return false;
 		y += step;
 		mu += s.x[2];
-		if (stepLength <= tolerance)
+		// Done when the step is below the tolerance, or when Newton's quadratic regime puts the
+		// next one there (that step's derivatives were a fifth of a refinement).
+		const double stepMu = std::fabs(s.x[2]);
+		if (stepLength <= tolerance || (previous <= 1e-2 * reach && NewtonSettled(stepLength, previous, tolerance) &&
+		                                NewtonSettled(stepMu, previousMu, 1e-13 * std::fabs(mu))))
 		{
 			const Vec2 x = ToBody(walk.bInA, y);
 			++walk.evaluations;
@@ -120,6 +126,8 @@ bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, doubl
 			point = x;
 			return true;
 		}
+		previous = stepLength;
+		previousMu = stepMu;
 	}
 	return false;
 }

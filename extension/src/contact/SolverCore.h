@@ -7,6 +7,16 @@
 namespace b2a
 {
 
+/// Newton's quadratic regime, as the full solvers test it: a step `now` that is at rounding (a
+/// tenth of the tolerance), or that contracted by 4 from `before` and leaves an error K·now²
+/// (K ≈ now/before²) ten times below the tolerance (multiplied out: no division). The step
+/// after it would be below the tolerance, so it need not be computed.
+inline bool NewtonSettled(double now, double before, double tolerance)
+{
+	return now <= 0.1 * tolerance ||
+	       (before > 0.0 && now < 0.25 * before && 10.0 * now * now * now <= tolerance * before * before);
+}
+
 /// True when both shapes suit Newton (smooth, strictly convex); else fills `failure` with why.
 inline bool NewtonApplies(const Shape& a, const Shape& b, LevelResult& failure)
 {

@@ -42,14 +42,6 @@ inline void EvaluatePair(const SuperellipseTerms& ta, const SuperellipseTerms& t
 	e.hB = Sym22{c * c * db.hx + s * s * db.hy, c * s * (db.hx - db.hy), s * s * db.hx + c * c * db.hy};
 }
 
-// Newton's quadratic regime, as the full solver tests it: a step `now` that is at rounding
-// (a tenth of the tolerance), or that contracted by 4 from `before` and leaves an error
-// K·now² (K ≈ now/before²) ten times below the tolerance (multiplied out: no division).
-inline bool Settled(double now, double before, double tolerance)
-{
-	return now <= 0.1 * tolerance ||
-	       (before > 0.0 && now < 0.25 * before && 10.0 * now * now * now <= tolerance * before * before);
-}
 } // namespace
 
 bool FinishApplies(const SuperellipseShape& a, const SuperellipseShape& b)
@@ -121,8 +113,8 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 			return false; // not near the answer (or not finite)
 		if (previous > 0.0 && !(stepX <= 0.25 * previous || stepX <= tolerance))
 			return false; // not contracting: not in Newton's quadratic regime
-		if (previous > 0.0 && previous <= 1e-2 * size && Settled(stepX, previous, tolerance) &&
-		    Settled(stepMu, previousMu, options.stepTolerance * mu))
+		if (previous > 0.0 && previous <= 1e-2 * size && NewtonSettled(stepX, previous, tolerance) &&
+		    NewtonSettled(stepMu, previousMu, options.stepTolerance * mu))
 		{
 			// The last step, taken without evaluating the shapes: f + ∇f·δ and ∇f + ∇²f·δ, exact to
 			// O(|δ|²), far below the tolerance here.
