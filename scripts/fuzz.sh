@@ -9,7 +9,8 @@
 # corpus stays as it is), crashes to out/fuzz/<target>/crash-*; the fuzzers' logs to
 # out/fuzz/<target>.log. Prints one line per target (runs, runs/s, coverage, corpus) and exits 1
 # when a target found a crash, a hang (over 10 s) or a sanitizer report. B2A_FUZZ_SEED=N fixes the
-# fuzzers' random seed (CI does, so that a run's mutations are repeatable; default: random).
+# fuzzers' random seed (CI does; default: random). A timed run is still not repeatable on another
+# machine, which makes a different number of inputs: replay a crash from the file it wrote.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
