@@ -396,6 +396,17 @@ TEST_CASE("statuses and failure strings are sensible")
 		CHECK(Contains(r.failure, "convex"));
 		CHECK(AllFinite(r));
 	}
+	// The refusal comes before any solve: the warm start it was given stays as it was.
+	for (MethodChoice m : {MethodChoice::automatic, MethodChoice::grid})
+	{
+		WarmStart warm;
+		REQUIRE(SolveCommonLevel(*ellipse, pa, *ellipse, pb, MethodChoice::automatic, {}, &warm).Ok());
+		REQUIRE(warm.valid);
+		const WarmStart before = warm;
+		CHECK_FALSE(SolveCommonLevel(*heart, pa, *ellipse, pb, m, {}, &warm).Ok());
+		CHECK(warm.valid);
+		CHECK(warm.multiplier == before.multiplier);
+	}
 	// ComputeContact with Newton forced on a heart: failed, with the reason, and no NaN.
 	const ContactResult c = ComputeContact(*heart, pa, *ellipse, pb, MethodChoice::newton);
 	CHECK_FALSE(c.Ok());

@@ -67,18 +67,21 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 			warm->valid = false;
 		return NonFinitePoseFailure<LevelResult>();
 	}
+	// The common level needs convex shapes: SolveCommonLevelGrid's refusal for both methods that
+	// would take it, before anything is solved or recorded (`warm` stays as it was).
+	if (method != MethodChoice::newton && !(a.IsConvex() && b.IsConvex()))
+		return SolveCommonLevelGrid(a, pa, b, pb, options);
 	LevelResult r;
 	LevelSlide slide; // Newton's, for the next warm start
 	LevelSlide* keep = warm ? &slide : nullptr;
 	const bool smooth = a.IsSmoothConvex() && b.IsSmoothConvex();
-	const bool convex = a.IsConvex() && b.IsConvex();
 	switch (method)
 	{
 	case MethodChoice::newton:
 		r = SolveCommonLevelNewton(a, pa, b, pb, options, warm, keep);
 		break;
 	case MethodChoice::grid:
-		r = SolveCommonLevelGrid(a, pa, b, pb, options); // refuses non-convex shapes itself
+		r = SolveCommonLevelGrid(a, pa, b, pb, options);
 		break;
 	default:
 		const SuperellipseShape* ea = AsPlainEllipse(a);
@@ -105,14 +108,9 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 					r.status = SolveStatus::convergedAfterFallback;
 			}
 		}
-		else if (convex)
-		{
-			r = SolveCommonLevelGrid(a, pa, b, pb, options);
-		}
 		else
 		{
-			r.failure = "the common level needs convex shapes; use the one-sided scale (scale_a) for non-convex ones";
-			return r;
+			r = SolveCommonLevelGrid(a, pa, b, pb, options); // convex, not smooth
 		}
 	}
 	r = CheckedResult(r);
