@@ -337,7 +337,7 @@ TEST_CASE("ellipses: EllipseContact serves ellipse and circle pairs, points to 1
 TEST_CASE("ellipses: EllipseContact up to aspect 100, a line that misses by the radial point, to 1e-10 of the reference")
 {
 	// Up to aspect 16 the Perram–Wertheim point is finished in double (the level matrix's
-	// condition is at most 256), beyond in long double; where the normal line misses a particle
+	// condition is at most 256), beyond after a refining step; where the normal line misses a particle
 	// (most separated pairs beyond aspect 10) its point is the radial one in closed form. Both
 	// against the long-double reference: points, normal and separation to 1e-10 of the size
 	// (measured: 3.1e-14; 71 of the 168 lines miss one particle).
@@ -363,4 +363,57 @@ TEST_CASE("ellipses: EllipseContact up to aspect 100, a line that misses by the 
 	CHECK(misses >= 10);
 	CHECK(worst > 0.0);
 	MESSAGE("worst " << worst << ", misses " << misses << " of " << cases.size());
+}
+
+TEST_CASE("ellipses: a warm start far from the root, as when the contact runs along needles, converges in few steps")
+{
+	// Between 1000:1 needles one step's turn by 1e-3 rad can move the contact from near one
+	// tip to the middle, and the multiplier s/(1 − s) by a factor 1e3 or more (b2a_bench_pairs'
+	// motions). Here every pair, half of them nearly parallel, is solved from warm multipliers
+	// 1e-4 to 1e4 times its own: the answer is still the reference's to 1e-12, through the
+	// refining step that replaced the long-double finish, and the steps stay within what
+	// they take now (measured: at most 23, 8.4 on average).
+	Random rng(4242);
+	int solves = 0, worstSteps = 0, totalSteps = 0;
+	double worstLevel = 0.0, worstPoint = 0.0;
+	for (int k = 0; k < 40; ++k)
+	{
+		const double size = rng.LogUniform(1e-2, 1e2);
+		const double aA = size * rng.LogUniform(0.5, 2.0), aB = size * rng.LogUniform(0.5, 2.0);
+		const double bA = aA / rng.LogUniform(100.0, 1000.0), bB = aB / rng.LogUniform(100.0, 1000.0);
+		const auto a = MakeEllipse(aA, bA), b = MakeEllipse(aB, bB);
+		const Pose pa(Vec2(rng.Uniform(-5.0, 5.0) * size, rng.Uniform(-5.0, 5.0) * size), rng.Angle());
+		const double dir = rng.Angle();
+		const Vec2 u(std::cos(dir), std::sin(dir));
+		const double thB = k % 2 ? pa.q.Angle() + rng.Uniform(-0.01, 0.01) : rng.Angle(); // half near parallel
+		const ref::Quad qa = ref::QuadOf(aA, bA, ref::Of(pa));
+		const ref::PwResult at1 = ref::PerramWertheim(qa, ref::QuadOf(aB, bB, ref::Of(Pose(pa.p + size * u, thB))));
+		const Pose pb(pa.p + (size / double(std::sqrt(at1.level))) * rng.Uniform(0.8, 1.2) * u, thB);
+		const ref::PwResult want = ref::PerramWertheim(qa, ref::QuadOf(aB, bB, ref::Of(pb)));
+		const LD scale = std::sqrt(want.level) * (aA + aB);
+		for (double factor : {1e-4, 1e-2, 0.1, 10.0, 1e2, 1e4})
+		{
+			INFO("A=(" << aA << "," << bA << ") B=(" << aB << "," << bB << ") mu " << double(want.mu) << " warm x" << factor);
+			WarmStart warm;
+			warm.valid = true;
+			warm.multiplier = double(want.mu) * factor;
+			const LevelResult r = SolveCommonLevel(*a, pa, *b, pb, MethodChoice::automatic, {}, &warm);
+			REQUIRE(r.Ok());
+			REQUIRE(r.method == SolveMethod::ellipsePair);
+			worstLevel = std::max(worstLevel, LevelErr(r.level, want.level));
+			worstPoint = std::max(worstPoint, double(ref::Dist(r.point, want.point) / scale));
+			worstSteps = std::max(worstSteps, r.iterations);
+			totalSteps += r.iterations;
+			++solves;
+		}
+	}
+	CAPTURE(worstLevel);
+	CAPTURE(worstPoint);
+	CAPTURE(worstSteps);
+	CAPTURE(totalSteps);
+	CHECK(solves == 240);
+	CHECK(worstLevel <= 1e-12);
+	CHECK(worstPoint <= 1e-12);
+	CHECK(worstSteps <= 25);
+	CHECK(totalSteps <= 9 * solves);
 }

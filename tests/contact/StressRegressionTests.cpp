@@ -179,6 +179,42 @@ TEST_CASE("stress: Newton's hardest tangent and far pairs (size ratios 1e5) matc
 	}
 }
 
+TEST_CASE("stress: ellipse pairs of very unequal sizes take refining steps until settled")
+{
+	// Two ellipse pairs of a million-pair run (seed 1, configurations 84828 and 34926): a
+	// 0.0093 × 2.3e-6 needle 5500 length units from the centre of a 566 × 213 ellipse, and a
+	// 1.8e-6 × 0.0016 one beside a 194 × 26 one. Beyond aspect 16 the Perram–Wertheim point is
+	// refined by Newton steps on (x, s) from residuals computed in each body frame; here the
+	// point is so far from the large one's centre that H's roundings leave a first step 1e-6
+	// of the small size off (and the long-double finish before it was 1.3e-8 off): further
+	// steps are taken until one is below 1e-10 of the offset from the nearer centre.
+	// Measured: 2.2e-11 and 1.5e-13 of the size.
+	const std::vector<Pair> pairs = {
+		Superellipses("needle 5500 from a large ellipse's centre", 0x1.1ae71462b69d8p+9, 0x1.aaacc90a8a8ddp+7, 2.0, 2.0,
+		              0x1.3129e36e4df31p-7, 0x1.387cd0502f0d6p-17, 2.0, 2.0,
+		              Pose(Vec2(-0x1.4a00b30411d3p+12, -0x1.b3eee95fabd32p+9), 0x1.44240679a40cp-2),
+		              Pose(Vec2(0x1.31a1e0eff5881p-4, -0x1.4740730b5d1e2p-5), -0x1.abe1cdb0dcd24p-1),
+		              V{0.011545145477811982193L, 0.029812664108849781347L}, 101.97948411037666822L),
+		Superellipses("needle beside a large ellipse", 0x1.83e629dd457b8p+7, 0x1.a456bd684ac94p+4, 2.0, 2.0,
+		              0x1.da1e6bfdabfp-20, 0x1.a6180745f2791p-10, 2.0, 2.0,
+		              Pose(Vec2(-0x1.4c562ba5dd489p+3, 0x1.1016c96e38b1ep+3), -0x1.7dc06ec6997e8p-1),
+		              Pose(Vec2(-0x1.4f6bd71612f93p-8, 0x1.49f9864ecb046p-8), 0x1.fbf2254149504p+0),
+		              V{-0.0052293726519802812201L, 0.0049862154237880965894L}, 0.005692329617114205667L),
+	};
+	for (const Pair& p : pairs)
+	{
+		INFO(std::string(p.name));
+		const ref::CommonLevelResult r = ref::CommonLevelRef(p.ra, ref::Of(p.pa), p.rb, ref::Of(p.pb));
+		CHECK(double(std::fabs(r.level - p.builtLevel) / p.builtLevel) < 1e-12);
+		CHECK(double(ref::Len(r.point - p.built)) < 1e-7 * p.Size());
+		const LevelResult l = SolveCommonLevel(*p.a, p.pa, *p.b, p.pb);
+		REQUIRE(l.Ok());
+		CHECK(l.method == SolveMethod::ellipsePair);
+		CHECK(double(std::fabs(l.level - p.builtLevel) / p.builtLevel) < 1e-13);
+		CHECK(double(ref::Dist(l.point, p.built)) < 1e-10 * p.Size());
+	}
+}
+
 TEST_CASE("stress: the min-max answer of a needle far from a giant is polished to the dense reference")
 {
 	// The largest point error of the automatic common level in a million-pair run: a 0.0023 ×

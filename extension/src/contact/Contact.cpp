@@ -195,8 +195,9 @@ ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, c
 {
 	ContactResult c = ContactOfLevel(level);
 	const Vec2 X = level.point;
-	// The ellipse-pair solver's normal is ∇λA at its point in long double, and there ∇λB is
-	// exactly opposed (the point minimises (1 − s)λA + sλB): re-deriving it from double gradients
+	// The ellipse-pair solver's normal is ∇λA or −∇λB at its point, whichever its rounding
+	// disturbs less (at the root they are opposed: the point minimises (1 − s)λA + sλB), from
+	// residuals computed in each body frame: re-deriving it from the double point's gradient
 	// would lose up to 1e-7 rad on 1000:1 needles.
 	c.normal = level.method == SolveMethod::ellipsePair ? level.normal : ContactNormal(a, pa, b, pb, X, pointOnB);
 	const Vec2 n = c.normal;

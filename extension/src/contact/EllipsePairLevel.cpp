@@ -24,6 +24,16 @@ Sym22 LevelMatrix(const SuperellipseShape& s, const Pose& p)
 
 double Quad(const Sym22& m, Vec2 v) { return Dot(v, m * v); }
 
+// The rounding of hi = p − q, per component: p − q = hi + low exactly (Knuth's TwoSum).
+Vec2 TwoDifferenceLow(Vec2 p, Vec2 q, Vec2 hi)
+{
+	auto low = [](double a, double b, double s) {
+		const double bb = s - a;
+		return (a - (s - bb)) + (b - bb);
+	};
+	return {low(p.x, -q.x, hi.x), low(p.y, -q.y, hi.y)};
+}
+
 // ContactFromLevel's rule for an ellipse's point on the line X + t·dir, from the line's quadratic
 // A t² + 2B t + (λ − 1) in the level λ (λ the level at X): X itself when λ is within 1e-10 of 1,
 // the larger root where the line crosses, where it misses beyond rounding the radial point (only
@@ -129,6 +139,8 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 	// of s (or of 1 − s), the step is the last, taken without a further solve (x moves by
 	// x'·δ = −½w·δ, exact to |x''|δ² ~ 1e-17 of the size). Steps leaving the bracket bisect it.
 	const Vec2 mbrc = MB * rc;
+	auto moderate = [](const SuperellipseShape& e) { return std::max(e.A(), e.B()) <= 16.0 * std::min(e.A(), e.B()); };
+	const bool needles = !(moderate(a) && moderate(b));
 	double lo = 0.0, hi = 1.0;
 	Vec2 x, w;          // x(s) and w = H⁻¹d at the last solved s
 	double solvedAt = s; // that s
@@ -191,19 +203,16 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 		}
 	}
 	// The point of the last multiplier. H's condition grows like the aspect ratio squared (1e6
-	// for 1000:1 needles), and its entries mix 1/a² and 1/b² through the rotation, so double
-	// rounding there would cost the point up to 1e-10 of the size: needles finish in long double.
-	// Up to aspect 16 the condition is at most 256 and double keeps the point at rounding level
-	// (b2a_bench_pairs, warm 10:1 motions: 6e-15 of the size), and saves the long-double finish,
-	// 40 % of a warm contact at aspect 10. (At aspect 100 double would still keep it to 7e-12,
-	// inside the 1e-9 asked of contacts, but 250 times above the long-double finish's.)
-	auto moderate = [](const SuperellipseShape& e) { return std::max(e.A(), e.B()) <= 16.0 * std::min(e.A(), e.B()); };
-	Vec2 gA;            // MA·x, half of ∇λA: the normal's direction
-	Vec2 normal;        // its unit vector, once computed
+	// for 1000:1 needles), and its entries mix 1/a² and 1/b² through the rotation, so H's own x
+	// would be off by up to 1e-10 of the size there: needles take a refining step (below). Up to
+	// aspect 16 the condition is at most 256 and H's x keeps the point at rounding level
+	// (b2a_bench_pairs, warm 10:1 motions: 6e-15 of the size) without it.
+	Vec2 gA;            // MA·x, half of ∇λA
+	Vec2 normal;        // the unit normal, once computed
 	Vec2 point;         // the world point
 	double level = 0.0; // F(s): flat at the maximum, so s's rounding hardly moves it
 	double lamA = 0.0;
-	if (moderate(a) && moderate(b))
+	if (!needles)
 	{
 		x = x - (0.5 * (s - solvedAt)) * w; // x(s) from the last solve, x' = −½w
 		gA = MA * x;
@@ -233,48 +242,84 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 	}
 	else
 	{
-		using LD = long double;
-		struct M2 { LD xx, xy, yy; };
-		auto matrix = [](const SuperellipseShape& e, const Pose& p) {
-			const LD c = p.q.c, sn = p.q.s, ia = 1.0L / (LD(e.A()) * e.A()), ib = 1.0L / (LD(e.B()) * e.B());
-			return M2{c * c * ia + sn * sn * ib, c * sn * (ia - ib), sn * sn * ia + c * c * ib};
+		// Needles: Newton steps on the pair (x, s), H·δx + ½d·δs = −(H·x − s·MB·r) and
+		// d·δx = −h (one, mostly: see `settled`), from residuals computed without H. H's entries mix 1/a² and 1/b², so each
+		// carries a rounding of 1e-16 of the large one, 1e-10 of the small one at aspect 1000,
+		// and that is how far H's own x is off; the residual (1 − s)·MA·x + s·MB·(x − r), with
+		// each M applied in its body frame (rotate, scale by the axes, rotate back), is exact to
+		// a rounding of the gradients instead. The step solves with H as the loop did, which
+		// only the step's own size multiplies (cond·1e-16 of 1e-10 of the size), and the
+		// centre offset is carried exactly (TwoSum) so that B's position loses nothing either.
+		// Eliminating δx = −z − ½w·δs (z = H⁻¹·res, w = H⁻¹d) leaves d·z + ½(d·w)δs = h.
+		// This replaces a finish in long double that took half of a warm 100:1 contact.
+		const SuperellipseTerms& ta = a.Terms();
+		const SuperellipseTerms& tb = b.Terms();
+		const Vec2 rcLow = TwoDifferenceLow(pb.p, pa.p, rc);
+		// Half the gradient (M·v) and the level (vᵀM v) of one ellipse at v from its centre.
+		auto halfGradient = [](const SuperellipseTerms& t, Rot q, Vec2 v, double& lam) {
+			const Vec2 u = InvRotate(q, v);
+			const Vec2 g(0.5 * t.hessX * u.x, 0.5 * t.hessY * u.y);
+			lam = u.x * g.x + u.y * g.y;
+			return Rotate(q, g);
 		};
-		const M2 la = matrix(a, pa), lb = matrix(b, pb);
-		const LD rx = LD(pb.p.x) - pa.p.x, ry = LD(pb.p.y) - pa.p.y;
-		LD sl = s, px = 0, py = 0, levelA = 0, levelB = 0;
-		// x(s), λA, λB; then (once) the Newton correction of s from h and h' in long double, whose
-		// rounding no longer limits s as the double h's did.
-		for (int pass = 0; pass < 2; ++pass)
+		x = x - (0.5 * (s - solvedAt)) * w;
+		double lamB = 0.0;
+		Vec2 gB;
+		bool settled = false;
+		for (int pass = 0;; ++pass)
 		{
-			const M2 h{(1 - sl) * la.xx + sl * lb.xx, (1 - sl) * la.xy + sl * lb.xy, (1 - sl) * la.yy + sl * lb.yy};
-			const LD bx = sl * (lb.xx * rx + lb.xy * ry), by = sl * (lb.xy * rx + lb.yy * ry);
-			const LD dl = h.xx * h.yy - h.xy * h.xy;
-			px = (h.yy * bx - h.xy * by) / dl;
-			py = (h.xx * by - h.xy * bx) / dl;
-			const LD qx = px - rx, qy = py - ry;
-			const LD gax = la.xx * px + la.xy * py, gay = la.xy * px + la.yy * py;
-			const LD gbx = lb.xx * qx + lb.xy * qy, gby = lb.xy * qx + lb.yy * qy;
-			levelA = px * gax + py * gay;
-			levelB = qx * gbx + qy * gby;
-			if (pass == 1)
+			gA = halfGradient(ta, pa.q, x, lamA);
+			gB = halfGradient(tb, pb.q, (x - rc) - rcLow, lamB);
+			if (pass == 4)
 				break;
-			const LD dx = 2 * (gbx - gax), dy = 2 * (gby - gay);
-			const LD wx = (h.yy * dx - h.xy * dy) / dl, wy = (h.xx * dy - h.xy * dx) / dl;
-			const LD slopeL = -0.5L * (dx * wx + dy * wy);
-			const LD next = sl - (levelB - levelA) / slopeL;
-			if (slopeL < 0 && next > 0 && next < 1)
-				sl = next;
+			const Vec2 res = (1.0 - s) * gA + s * gB, d = 2.0 * (gB - gA);
+			const Sym22 H = (1.0 - s) * MA + s * MB;
+			const double det = H.xx * H.yy - H.xy * H.xy;
+			if (!(det > 0.0))
+				break;
+			const double inv = 1.0 / det;
+			const Vec2 z = inv * Vec2(H.yy * res.x - H.xy * res.y, H.xx * res.y - H.xy * res.x);
+			const Vec2 wd = inv * Vec2(H.yy * d.x - H.xy * d.y, H.xx * d.y - H.xy * d.x);
+			const double dw = Dot(d, wd);
+			double ds = dw > 0.0 ? 2.0 * (lamB - lamA - Dot(d, z)) / dw : 0.0;
+			if (!(s + ds > 0.0 && s + ds < 1.0))
+				ds = 0.0;
+			const Vec2 dx = -z - (0.5 * ds) * wd;
+			// Settled when the step is below 1e-10 of the offset from the nearer centre: H's
+			// roundings leave at most cond·1e-16 of it (1e-10 at aspect 1000), and the next step
+			// would be at rounding level. A larger step (a pair of very unequal sizes, whose
+			// point is far from the large one's centre, or a loop that ended by bisection)
+			// takes another, up to four.
+			settled = LengthSquared(dx) <= 1e-20 * std::min(LengthSquared(x), LengthSquared(x - rc));
+			s += ds;
+			x = x + dx;
+			if (settled)
+			{
+				// The gradients and levels at x + dx from those at x, exactly (they are linear and
+				// quadratic in x): no second pass of rotations, and no rounding of x + dx in them.
+				const Vec2 dgA = MA * dx, dgB = MB * dx;
+				lamA += Dot(dx, 2.0 * gA + dgA);
+				lamB += Dot(dx, 2.0 * gB + dgB);
+				gA = gA + dgA;
+				gB = gB + dgB;
+				break;
+			}
 		}
-		s = double(sl);
-		x = Vec2(double(px), double(py));
-		lamA = double(levelA);
-		gA = Vec2(double(la.xx * px + la.xy * py), double(la.xy * px + la.yy * py));
-		level = double((1 - sl) * levelA + sl * levelB);
-		point = Vec2(double(pa.p.x + LD(px)), double(pa.p.y + LD(py)));
-		if (points && LengthSquared(gA) > 0.0)
+		level = (1.0 - s) * lamA + s * lamB;
+		point = pa.p + x;
+		// The normal from the better-conditioned of the two parallel gradients (equal in direction
+		// at the root, to the step's rounding). Each gradient is off by the rounding of its body
+		// coordinates, 1e-16·|v|, times the stiffer axis 1/b², and at a needle's tip, where the
+		// gradient is only 1/a, that is a relative 1e-16·(a/b)²: 1e-10 at 1000:1. The other
+		// particle's side has the gradient 1/b there and keeps the normal to 1e-13. So each
+		// error bound |v|·max(1/a², 1/b²)/|g| is compared, crosswise and squared.
+		const Vec2 xb = x - rc;
+		const double kA = 0.5 * std::max(ta.hessX, ta.hessY), kB = 0.5 * std::max(tb.hessX, tb.hessY);
+		const bool fromB = LengthSquared(x) * kA * kA * LengthSquared(gB) > LengthSquared(xb) * kB * kB * LengthSquared(gA);
+		normal = Normalize(fromB && LengthSquared(gB) > 0.0 ? -gB : gA);
+		if (points && LengthSquared(normal) > 0.0)
 		{
 			// The points in each body frame, where the levels carry no rotation's rounding.
-			normal = Normalize(gA);
 			points->valid = EllipseLinePoint(a, pa, point, normal, points->a) && EllipseLinePoint(b, pb, point, -normal, points->b);
 		}
 	}
