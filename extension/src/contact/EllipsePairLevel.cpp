@@ -278,11 +278,11 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 	else
 	{
 		// Needles: Newton steps on the pair (x, s), H·δx + ½d·δs = −(H·x − s·MB·r) and
-		// d·δx = −h (one, mostly: see `settled`), from residuals computed without H. H's entries mix 1/a² and 1/b², so each
-		// carries a rounding of 1e-16 of the large one, 1e-10 of the small one at aspect 1000,
-		// and that is how far H's own x is off; the residual (1 − s)·MA·x + s·MB·(x − r), with
-		// each M applied in its body frame (rotate, scale by the axes, rotate back), is exact to
-		// a rounding of the gradients instead. The step solves with H as the loop did, which
+		// d·δx = −h (one, mostly: see `settled`), from residuals computed without H. H's entries
+		// mix 1/a² and 1/b², so each carries a rounding of 1e-16 of the large one, 1e-10 of the
+		// small one at aspect 1000, and that is how far H's own x is off; the residual
+		// (1 − s)·MA·x + s·MB·(x − r), with each M applied in its body frame (rotate, scale by the
+		// axes, rotate back), is exact to a rounding of the gradients instead. The step solves with H as the loop did, which
 		// only the step's own size multiplies (cond·1e-16 of 1e-10 of the size), and the
 		// centre offset is carried exactly (TwoSum) so that B's position loses nothing either.
 		// Eliminating δx = −z − ½w·δs (z = H⁻¹·res, w = H⁻¹d) leaves d·z + ½(d·w)δs = h.
