@@ -3,6 +3,7 @@
 
 #include "b2analytic/SuperellipseShape.h"
 #include "numerics/RootFinding.h"
+#include "numerics/SmallLinear.h"
 
 #include <algorithm>
 #include <cmath>
@@ -282,11 +283,13 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 		// mix 1/a² and 1/b², so each carries a rounding of 1e-16 of the large one, 1e-10 of the
 		// small one at aspect 1000, and that is how far H's own x is off; the residual
 		// (1 − s)·MA·x + s·MB·(x − r), with each M applied in its body frame (rotate, scale by the
-		// axes, rotate back), is exact to a rounding of the gradients instead. The step solves with H as the loop did, which
-		// only the step's own size multiplies (cond·1e-16 of 1e-10 of the size), and the
-		// centre offset is carried exactly (TwoSum) so that B's position loses nothing either.
-		// Eliminating δx = −z − ½w·δs (z = H⁻¹·res, w = H⁻¹d) leaves d·z + ½(d·w)δs = h.
-		// This replaces a finish in long double that took half of a warm 100:1 contact.
+		// axes, rotate back), is exact to a rounding of the gradients instead. The step solves
+		// with H as the loop did, which only the step's own size multiplies (cond·1e-16 of 1e-10
+		// of the size): the bordered system [[H, d/2], [dᵀ, 0]], by SolveBorderedSolution as the
+		// superellipse finish solves its own; a singular one, or a multiplier leaving (0, 1),
+		// ends the steps. The centre offset is carried exactly (TwoSum) so that B's position
+		// loses nothing either. This replaces a finish in long double that took half of a warm
+		// 100:1 contact.
 		const SuperellipseTerms& ta = a.Terms();
 		const SuperellipseTerms& tb = b.Terms();
 		const Vec2 rcLow = TwoDifferenceLow(pb.p, pa.p, rc);
@@ -309,17 +312,13 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 				break;
 			const Vec2 res = (1.0 - s) * gA + s * gB, d = 2.0 * (gB - gA);
 			const Sym22 H = (1.0 - s) * MA + s * MB;
-			const double det = H.xx * H.yy - H.xy * H.xy;
-			if (!(det > 0.0))
+			const double minusR[3] = {-res.x, -res.y, lamA - lamB};
+			double delta[3];
+			if (!SolveBorderedSolution(H.xx, H.xy, H.yy, 0.5 * d.x, 0.5 * d.y, d.x, d.y, minusR, delta) ||
+			    !(s + delta[2] > 0.0 && s + delta[2] < 1.0))
 				break;
-			const double inv = 1.0 / det;
-			const Vec2 z = inv * Vec2(H.yy * res.x - H.xy * res.y, H.xx * res.y - H.xy * res.x);
-			const Vec2 wd = inv * Vec2(H.yy * d.x - H.xy * d.y, H.xx * d.y - H.xy * d.x);
-			const double dw = Dot(d, wd);
-			double ds = dw > 0.0 ? 2.0 * (lamB - lamA - Dot(d, z)) / dw : 0.0;
-			if (!(s + ds > 0.0 && s + ds < 1.0))
-				ds = 0.0;
-			const Vec2 dx = -z - (0.5 * ds) * wd;
+			const Vec2 dx(delta[0], delta[1]);
+			const double ds = delta[2];
 			// Settled when the step is below 1e-10 of the offset from the nearer centre: H's
 			// roundings leave at most cond·1e-16 of it (1e-10 at aspect 1000), and the next step
 			// would be at rounding level. A larger step (a pair of very unequal sizes, whose
