@@ -342,9 +342,13 @@ Vec2 SuperellipseShape::SupportNear(Vec2 d, int lagrangeSteps) const
 			const double norm = std::sqrt(std::sqrt(px * std::fabs(e.x) + py * std::fabs(e.y)));
 			return Vec2(m_a * SignOf(e.x) * px / norm, m_b * SignOf(e.y) * py / norm);
 		}
+		// e is divided by its larger component, so that component's power is exactly 1 (no pow),
+		// and ‖e‖_q^{q−1} = (Σ|e_i|^q)^{1/p} is a root RootOf takes by square roots for p = 8:
+		// one pow where there were three (each a twentieth of a cold n = 8 contact).
 		const double q = p / (p - 1.0);
-		const double px = std::pow(std::fabs(e.x), q - 1.0), py = std::pow(std::fabs(e.y), q - 1.0);
-		const double norm = std::pow(px * std::fabs(e.x) + py * std::fabs(e.y), (q - 1.0) / q);
+		const double ax = std::fabs(e.x), ay = std::fabs(e.y);
+		const double px = ax == 1.0 ? 1.0 : std::pow(ax, q - 1.0), py = ay == 1.0 ? 1.0 : std::pow(ay, q - 1.0);
+		const double norm = RootOf(px * ax + py * ay, p);
 		return Vec2(m_a * SignOf(e.x) * px / norm, m_b * SignOf(e.y) * py / norm);
 	}
 	if (m_n == 1.0 || m_m == 1.0)
