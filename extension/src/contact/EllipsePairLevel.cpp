@@ -303,7 +303,6 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 		x = x - (0.5 * (s - solvedAt)) * w;
 		double lamB = 0.0;
 		Vec2 gB;
-		bool settled = false;
 		for (int pass = 0;; ++pass)
 		{
 			gA = halfGradient(ta, pa.q, x, lamA);
@@ -324,7 +323,7 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 			// would be at rounding level. A larger step (a pair of very unequal sizes, whose
 			// point is far from the large one's centre, or a loop that ended by bisection)
 			// takes another, up to four.
-			settled = LengthSquared(dx) <= 1e-20 * std::min(LengthSquared(x), LengthSquared(x - rc));
+			const bool settled = LengthSquared(dx) <= 1e-20 * std::min(LengthSquared(x), LengthSquared(x - rc));
 			s += ds;
 			x = x + dx;
 			if (settled)
