@@ -137,3 +137,60 @@ TEST_CASE("superellipse terms: IntegerFarCrossing declines a line that misses th
 	REQUIRE(IntegerFarCrossing(terms, Vec2(1.5, 0.0), Vec2(1.0, 0.0), k, 0.6, t));
 	CHECK(std::fabs(t + 0.5) <= 1e-15);
 }
+
+TEST_CASE("superellipse terms: IntegerFarCrossings, interleaved, answers as the two crossings run alone, bit for bit")
+{
+	// The finish runs A's and B's crossings a step at a time in one loop; each must take the same
+	// steps as alone: the same verdict and the same t to the bit, also where one ends (found or
+	// declined) steps before the other.
+	const SuperellipseShape sa(1.0, 0.6, 4.0, 4.0), sb(0.8, 0.5, 4.0, 8.0);
+	Random rng(17);
+	int compared = 0, unequalSteps = 0, declined = 0;
+	for (int i = 0; i < 2000; ++i)
+	{
+		auto line = [&](const SuperellipseShape& s, Vec2& x, Vec2& d, double known[3]) {
+			const Vec2 q = s.SurfacePoint(rng.Angle());
+			d = Rotate(Rot(rng.Uniform(-0.6, 0.6)), Normalize(s.Gradient(q)));
+			if (i % 7 == 3)
+				d = -d; // running inwards: declined
+			x = q + rng.Uniform(-0.3, 0.3) * std::min(s.A(), s.B()) * d;
+			const LevelDerivatives at = RawSuperellipseDerivatives(s.Terms(), x);
+			known[0] = at.value;
+			known[1] = Dot(at.gradient, d);
+			known[2] = d.x * d.x * at.hessian.xx + d.y * d.y * at.hessian.yy;
+		};
+		Vec2 xa, da, xb, db;
+		double ka[3], kb[3];
+		line(sa, xa, da, ka);
+		line(sb, xb, db, kb);
+		const double ua = std::min(sa.A(), sa.B()), ub = std::min(sb.A(), sb.B());
+		double ta = 0.0, tb = 0.0;
+		const bool alone[2] = {IntegerFarCrossing(sa.Terms(), xa, da, ka, ua, ta), IntegerFarCrossing(sb.Terms(), xb, db, kb, ub, tb)};
+		IntegerCrossing ca(sa.Terms(), xa, da, ka, ua), cb(sb.Terms(), xb, db, kb, ub);
+		int stepsA = 0, stepsB = 0;
+		{
+			IntegerCrossing a = ca, b = cb;
+			while (a.state == IntegerCrossing::State::running && stepsA < 8)
+				a.Step(), ++stepsA;
+			while (b.state == IntegerCrossing::State::running && stepsB < 8)
+				b.Step(), ++stepsB;
+		}
+		unequalSteps += stepsA != stepsB;
+		IntegerFarCrossings(ca, cb);
+		CHECK((ca.state == IntegerCrossing::State::found) == alone[0]);
+		CHECK((cb.state == IntegerCrossing::State::found) == alone[1]);
+		CHECK(ca.state != IntegerCrossing::State::running);
+		CHECK(cb.state != IntegerCrossing::State::running);
+		if (alone[0])
+			CHECK(ca.t == ta);
+		if (alone[1])
+			CHECK(cb.t == tb);
+		declined += !alone[0] + !alone[1];
+		++compared;
+	}
+	CHECK(compared == 2000);
+	CAPTURE(unequalSteps);
+	CAPTURE(declined);
+	CHECK(unequalSteps >= 100); // the interleaving's uneven case is exercised
+	CHECK(declined >= 400);     // and so is a declined crossing beside a found one
+}

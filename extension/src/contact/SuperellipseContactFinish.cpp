@@ -155,12 +155,16 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 	const Vec2 nB = InvRotate(rel.q, -n);
 	const double knownA[3] = {e.fA, Dot(e.gA, n), Dot(n, e.hA * n)};
 	const double knownB[3] = {e.fB, -Dot(e.gB, n), Dot(n, e.hB * n)};
-	double tA = 0.0, tB = 0.0;
-	const bool onA = std::fabs(e.fA - 1.0) <= 1e-10 || IntegerFarCrossing(ta, x, n, knownA, std::min(a.A(), a.B()), tA) ||
-	                 SuperellipseFarCrossing(ta, x, n, tA);
-	const bool onB = onA && (std::fabs(e.fB - 1.0) <= 1e-10 ||
-	                         IntegerFarCrossing(tb, e.xB, nB, knownB, std::min(b.A(), b.B()), tB) ||
-	                         SuperellipseFarCrossing(tb, e.xB, nB, tB));
+	// (A point within 1e-10 of its surface is its own crossing: it starts found, at t = 0.)
+	IntegerCrossing crossA(ta, x, n, knownA, std::min(a.A(), a.B())), crossB(tb, e.xB, nB, knownB, std::min(b.A(), b.B()));
+	if (std::fabs(e.fA - 1.0) <= 1e-10)
+		crossA.state = IntegerCrossing::State::found;
+	if (std::fabs(e.fB - 1.0) <= 1e-10)
+		crossB.state = IntegerCrossing::State::found;
+	IntegerFarCrossings(crossA, crossB);
+	double tA = crossA.t, tB = crossB.t;
+	const bool onA = crossA.state == IntegerCrossing::State::found || SuperellipseFarCrossing(ta, x, n, tA);
+	const bool onB = onA && (crossB.state == IntegerCrossing::State::found || SuperellipseFarCrossing(tb, e.xB, nB, tB));
 	// The world normal is normalised after the turn, as ContactFromLevel's is: a pose built from
 	// Box2D's float rotation is off unit length by up to 1e-7, and so would be Rotate(pa.q, n).
 	const Vec2 normal = Normalize(Rotate(pa.q, n));

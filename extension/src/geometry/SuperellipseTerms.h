@@ -206,44 +206,103 @@ inline bool SuperellipseFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, 
 /// (5e-2 of `unit`) and that contracted tenfold ends the search when K·|δ|³ is below the
 /// tolerance (1e-15 of |t| + unit; `unit` is the particle's smaller semi-axis). Where g·g'' is
 /// large against g'² (far outside) the step is Newton's, which descends onto the far crossing
-/// of the convex g from outside. False where g' ≤ 0 (the line misses or runs along the
-/// particle), a step would leave 4 units, or it does not settle in 8 steps: the caller takes
-/// SuperellipseFarCrossing.
-inline bool IntegerFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit, double& t)
+/// of the convex g from outside. It fails where g' ≤ 0 (the line misses or runs along the
+/// particle), a step would leave 4 units, or it does not settle in 8 steps: the caller then
+/// takes SuperellipseFarCrossing.
+/// A step at a time (Step), so that the two crossings of a contact run interleaved
+/// (IntegerFarCrossings): each step waits for a division and then for the level it evaluates,
+/// and one crossing's chain fills the other's wait.
+struct IntegerCrossing
 {
-	const double X = x.x * s.invA, Y = x.y * s.invB, D = d.x * s.invA, E = d.y * s.invB;
-	const double nD = s.n * D, mE = s.m * E, nnDD = s.n * (s.n - 1.0) * D * D, mmEE = s.m * (s.m - 1.0) * E * E;
-	double g = known[0] - 1.0, g1 = known[1], g2 = known[2];
-	t = 0.0;
-	double previous = 0.0; // the last step's length (0: none yet)
-	for (int it = 0; it < 8; ++it)
+	enum class State { running, found, failed };
+
+	/// Starts at t = 0 with g, g', g'' from `known`.
+	IntegerCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit)
+	    : X(x.x * s.invA), Y(x.y * s.invB), D(d.x * s.invA), E(d.y * s.invB), nD(s.n * D), mE(s.m * E),
+	      nnDD(s.n * (s.n - 1.0) * D * D), mmEE(s.m * (s.m - 1.0) * E * E), g(known[0] - 1.0), g1(known[1]), g2(known[2]),
+	      unit(unit), nk(s.nInt - 2), mk(s.mInt - 2)
+	{
+	}
+
+	/// One Halley step, and the derivatives at its end unless it ended the search.
+	void Step()
 	{
 		if (!(g1 > 0.0))
-			return false;
+		{
+			state = State::failed;
+			return;
+		}
 		const double den = 2.0 * g1 * g1 - g * g2;
 		const double step = den >= g1 * g1 ? 2.0 * g * g1 / den : g / g1; // Halley, at most twice Newton's
 		t -= step;
 		const double size = std::fabs(step), tol = 1e-15 * (std::fabs(t) + unit);
 		if (!(size <= 4.0 * unit))
-			return false; // not near the surface, or not finite: the caller's search decides
+		{
+			state = State::failed; // not near the surface, or not finite: the caller's search decides
+			return;
+		}
 		if (size <= tol)
-			return true;
+		{
+			state = State::found;
+			return;
+		}
 		if (previous > 0.0 && previous <= 0.05 * unit && size < 0.1 * previous)
 		{
 			const double ratio = size / previous;
 			if (size * ratio * ratio * ratio <= 1e-15 * (std::fabs(t) + unit))
-				return true;
+			{
+				state = State::found;
+				return;
+			}
 		}
 		previous = size;
 		const double u = X + t * D, v = Y + t * E;
 		const double au = std::fabs(u), av = std::fabs(v);
-		const double un2 = PowAbs(au, 0.0, s.nInt - 2), vm2 = PowAbs(av, 0.0, s.mInt - 2);
+		const double un2 = PowAbs(au, 0.0, nk), vm2 = PowAbs(av, 0.0, mk);
 		const double un1 = un2 * au, vm1 = vm2 * av;
 		g = un1 * au + vm1 * av - 1.0;
 		g1 = nD * std::copysign(un1, u) + mE * std::copysign(vm1, v);
 		g2 = nnDD * un2 + mmEE * vm2;
 	}
-	return false;
+
+	double X, Y, D, E, nD, mE, nnDD, mmEE; // the line in scaled coordinates, and g's constant factors
+	double g, g1, g2;                       // g, g' and g'' at t
+	double t = 0.0;
+	double previous = 0.0; // the last step's length (0: none yet)
+	double unit;
+	int nk, mk; // n − 2 and m − 2
+	State state = State::running;
+};
+
+/// One crossing run alone: true with t where it is found.
+inline bool IntegerFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit, double& t)
+{
+	IntegerCrossing c(s, x, d, known, unit);
+	for (int it = 0; it < 8 && c.state == IntegerCrossing::State::running; ++it)
+		c.Step();
+	t = c.t;
+	return c.state == IntegerCrossing::State::found;
+}
+
+/// Two independent crossings, interleaved a step at a time (up to 8 steps each); each ends found
+/// or failed, with the same steps and the same answer as when run alone.
+inline void IntegerFarCrossings(IntegerCrossing& a, IntegerCrossing& b)
+{
+	using State = IntegerCrossing::State;
+	for (int it = 0; it < 8; ++it)
+	{
+		const bool runA = a.state == State::running, runB = b.state == State::running;
+		if (!runA && !runB)
+			return;
+		if (runA)
+			a.Step();
+		if (runB)
+			b.Step();
+	}
+	if (a.state == State::running)
+		a.state = State::failed;
+	if (b.state == State::running)
+		b.state = State::failed;
 }
 
 } // namespace b2a
