@@ -62,17 +62,21 @@ LevelDerivatives HeartShape::Derivatives(Vec2 x) const
 
 double HeartShape::LevelLowerBound(Vec2 centre, double radius) const
 {
-	// Over |x − c| ≤ ρ: x² ≥ dx² and y² ≥ dy² with d = (|c| − ρ)₊ per axis. The cusp term
-	// −|x|^{2/3} y ≥ −(|cx| + ρ)^{2/3} (cy + ρ) where the disc reaches y > 0, and where it lies
-	// below the x axis it adds at least dx^{2/3} |cy + ρ|.
+	// Over |x − c| ≤ ρ: |x|² ≥ (|c| − ρ)₊², the exact least |x|² on the disc, taken a rounding
+	// lower (1e-15 of |c|) so that it stays a bound. (Per component, dx² + dy² with
+	// d = (|c| − ρ)₊ per axis, was looser by up to 2ρ(|cx| + |cy| − |c|), and the grid scanned
+	// more runs with it: 2 % of a heart contact.) The cusp term −|x|^{2/3} y ≥
+	// −(|cx| + ρ)^{2/3} (cy + ρ) where the disc reaches y > 0, and where it lies below the x
+	// axis it adds at least dx^{2/3} |cy + ρ| with dx = (|cx| − ρ)₊.
 	// (The cube root by its bounds: the upper one where the term is subtracted, the lower one
 	// where it is added.)
-	const double dx = std::max(std::fabs(centre.x) - radius, 0.0), dy = std::max(std::fabs(centre.y) - radius, 0.0);
+	const double dx = std::max(std::fabs(centre.x) - radius, 0.0);
+	const double near = std::max(Length(centre) * (1.0 - 1e-15) - radius, 0.0);
 	const double top = centre.y + radius;
 	const double reach = top > 0.0 ? std::fabs(centre.x) + radius : dx;
 	double lower, upper;
 	CubeRootBounds(reach * reach, lower, upper);
-	return dx * dx + dy * dy - (top > 0.0 ? upper : lower) * top;
+	return near * near - (top > 0.0 ? upper : lower) * top;
 }
 
 double HeartShape::LevelUpperBound(Vec2 centre, double radius) const
