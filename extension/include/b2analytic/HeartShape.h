@@ -20,6 +20,8 @@ public:
 
 	std::string Describe() const override;
 	double Level(Vec2 x) const override;
+	/// Level's loop, inline (no virtual call a point).
+	void Levels(const Vec2* x, int count, double* out) const override;
 	LevelDerivatives Derivatives(Vec2 x) const override;
 	double RadiusAt(Vec2 u, double level) const override;
 	/// x² + y² − |x|^{2/3} y bounded term by term over the disc (one cube root).

@@ -133,6 +133,10 @@ public:
 	double SurfaceLevel() const { return m_surfaceLevel; }
 	/// The level at which a body point lies: the smallest L with x in { λ ≤ L }.
 	virtual double Level(Vec2 x) const = 0;
+	/// Level at `count` body points x[0 … count − 1] into out[0 … count − 1]: what Level answers
+	/// for each, in one call (the grid method scans its samples a run at a time). The default calls
+	/// Level; a shape overrides it where a loop of its own is cheaper than a virtual call a point.
+	virtual void Levels(const Vec2* x, int count, double* out) const;
 	/// Level, gradient and Hessian at a body point. Where the level function is not
 	/// differentiable (a superellipse axis with n < 2, the heart's axis of symmetry) the result
 	/// is finite and documented by the shape.

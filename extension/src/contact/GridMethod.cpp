@@ -356,19 +356,28 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		// tenth of a heart contact), and only the groups whose bound is below it are opened.
 		double lowest = std::numeric_limits<double>::infinity();
 		scratch.scannedRuns.clear();
+		// A run's samples are evaluated together (Shape::Levels: one virtual call a run, not one
+		// a sample); its end samples, shared with the neighbouring runs, may be evaluated again,
+		// to the same values. A NaN stops the scan (reported below).
 		auto scan = [&](int g) {
 			scanned[g] = 1;
 			scratch.scannedRuns.push_back(g);
 			int first, last;
 			runSamples(g, first, last);
-			for (int k = first; k <= last && ok; ++k)
+			const int end = std::min(last, n - 1); // (sample n is sample 0: done apart below)
+			for (int k = first; k <= end; ++k)
+				inA[k] = ToWorld(walk.bInA, samples->point[k]);
+			a.Levels(&inA[first], end - first + 1, &value[first]);
+			for (int k = first; k <= end; ++k)
 			{
-				const int j = k == n ? 0 : k; // (no %: a division each)
-				if (!evaluated(j))
-				{
-					ok = evaluate(j);
-					lowest = std::min(lowest, value[j]);
-				}
+				stamp[k] = generation;
+				lowest = std::min(lowest, value[k]);
+				ok = ok && !std::isnan(value[k]);
+			}
+			if (last == n && ok && !evaluated(0))
+			{
+				ok = evaluate(0);
+				lowest = std::min(lowest, value[0]);
 			}
 		};
 		int best = 0, bestGroup = -1;

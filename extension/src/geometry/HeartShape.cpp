@@ -29,10 +29,21 @@ double HeartShape::LengthHint() const
 	return 1.5 * std::sqrt(m_alpha);
 }
 
+namespace
+{
+// (r² − α)³ = x² y³  ⇔  α = r² − cbrt(x² y³), and (r² − α)³ is decreasing in α.
+inline double HeartLevel(Vec2 x) { return x.x * x.x + x.y * x.y - CubeRoot(x.x * x.x) * x.y; }
+} // namespace
+
 double HeartShape::Level(Vec2 x) const
 {
-	// (r² − α)³ = x² y³  ⇔  α = r² − cbrt(x² y³), and (r² − α)³ is decreasing in α.
-	return x.x * x.x + x.y * x.y - CubeRoot(x.x * x.x) * x.y;
+	return HeartLevel(x);
+}
+
+void HeartShape::Levels(const Vec2* x, int count, double* out) const
+{
+	for (int i = 0; i < count; ++i)
+		out[i] = HeartLevel(x[i]);
 }
 
 LevelDerivatives HeartShape::Derivatives(Vec2 x) const

@@ -87,6 +87,12 @@ void Shape::AddCorner(double theta)
 	m_serial = g_nextSerial.fetch_add(1, std::memory_order_relaxed); // the dense pass depends on the corners
 }
 
+void Shape::Levels(const Vec2* x, int count, double* out) const
+{
+	for (int i = 0; i < count; ++i)
+		out[i] = Level(x[i]);
+}
+
 double Shape::RadiusAt(Vec2 u, double level) const
 {
 	// Generic radial root of λ(t·u) = level. λ increases along the ray (star-shaped), so
