@@ -211,7 +211,7 @@ void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double
 // no curvature there); anything else, the bracketing search.
 template <typename SamplePoint>
 void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int k, const SamplePoint& samplePoint,
-                     double& value, Vec2& point)
+                     double valueBefore, double valueAfter, double& value, Vec2& point)
 {
 	const int n = samples.Count();
 	double lo, hi;
@@ -233,7 +233,20 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 			value = v, point = x;
 		return;
 	}
-	if (RefineNewton(walk, pl, ph, point, sampleValue, reach, value, point))
+	// Newton starts at the vertex of the parabola through the three samples' values, on the
+	// quadratic through their points (a point off B's curve by the cube of the spacing, which
+	// the constraint's row corrects): its first step is then a tenth or less of the sample's,
+	// and one step of four is saved. The vertex lies within half a spacing of the sample (the
+	// sample is the lowest of the three).
+	Vec2 start = point;
+	const double curvature = valueBefore - 2.0 * sampleValue + valueAfter;
+	if (curvature > 0.0 && std::isfinite(curvature))
+	{
+		const double tau = std::clamp(0.5 * (valueBefore - valueAfter) / curvature, -0.5, 0.5); // (in it but for rounding)
+		const Vec2 half = 0.5 * (ph - pl), bend = 0.5 * (ph + pl) - point;
+		start = point + tau * half + (tau * tau) * bend;
+	}
+	if (RefineNewton(walk, pl, ph, start, sampleValue, reach, value, point))
 		return;
 	const Pose& bInA = walk.bInA;
 	if (CornerRayCrossing(walk, ToWorld(bInA, pl), ToWorld(bInA, ph), value, point))
@@ -500,7 +513,14 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		double v = value[k];
 		Vec2 point = samplePoint(k);
 		if (options.gridRefine)
-			RefineCandidate(walk, *samples, k, samplePoint, v, point);
+		{
+			// (The neighbours of a local minimum of the samples were evaluated; those of the
+			// lowest sample, taken when no sample is one, need not have been: no parabola then.)
+			const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
+			const double nan = std::numeric_limits<double>::quiet_NaN();
+			RefineCandidate(walk, *samples, k, samplePoint, evaluated(before) ? value[before] : nan,
+			                evaluated(after) ? value[after] : nan, v, point);
+		}
 		if (v < bestValue)
 		{
 			bestValue = v;
