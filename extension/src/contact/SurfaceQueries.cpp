@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace b2a
 {
@@ -58,11 +59,17 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 	// march evaluates only near the surface. Near the shape's corners it looks down to 1/64 of
 	// the step, and finds a crossing pair that thin (a line clipping a heart's tip) where the
 	// plain step would step over it.
-	// The crossing in a bracket the march found.
-	auto root = [&](double from, double to, double ffrom, double fto) {
-		return LevelRootAlongLine(shape, pose, X, dir, own, from, to, ffrom, fto).x;
-	};
+	// The crossing in a bracket the march found, to the rounding of the point it gives: X + s·dir
+	// lies |x| from the shape's centre (x = X in the body frame), so a tolerance of a few
+	// roundings of |x| on s·|dir| is all a double point holds. (Relative to s alone, as without
+	// it, a crossing 1e-11 from X, where X is all but on the surface, asked for 1e-27: the level's
+	// own rounding then kept Newton from settling, and the bracket was halved 15 times or so, a
+	// 4 % of a heart contact.)
 	const double len = Length(dir);
+	const double xtol = 4.0 * std::numeric_limits<double>::epsilon() * Length(ToBody(pose, X)) / len;
+	auto root = [&](double from, double to, double ffrom, double fto) {
+		return LevelRootAlongLine(shape, pose, X, dir, own, from, to, ffrom, fto, xtol).x;
+	};
 	const double h = std::min(sMax / 64.0, 0.5 * shape.SamplesRef().maxSpacing / std::max(len, 1e-300));
 	const bool inside = f0 < 0.0;
 	auto middle = [&](double from, double to) { return ToBody(pose, X + (0.5 * (from + to)) * dir); };
