@@ -117,3 +117,40 @@ TEST_CASE("FirstSurfaceCrossing on hearts: a line clipping the tip finds the sli
 		}
 	}
 }
+
+TEST_CASE("FirstSurfaceCrossing on hearts: a start all but on the surface finds its crossing to the point's rounding")
+{
+	// X a hair (1e-13 to 1e-8 of the size) off the surface, inside or outside, and the line
+	// towards the surface along the normal, as a near-tangent contact's point asks: the root is
+	// taken to a few roundings of |x| (not to 2 eps of its own tiny s, which the level's rounding
+	// cannot resolve), and must still be that close to the reference crossing.
+	Random rng(47);
+	int checked = 0;
+	for (double alpha : {0.4, 1.0, 3.0})
+	{
+		const auto heart = MakeHeart(alpha);
+		const double R = heart->BoundingRadius();
+		for (int i = 0; i < 100; ++i)
+		{
+			const Pose pose(Vec2(rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)), rng.Angle());
+			const double theta = rng.Angle();
+			if (heart->NearCorner(theta, 1e-3))
+				continue;
+			const Vec2 q = heart->SurfacePoint(theta, alpha);
+			const Vec2 n = Normalize(heart->Gradient(q));
+			const double side = i % 2 ? 1.0 : -1.0, delta = rng.LogUniform(1e-13, 1e-8) * R;
+			const Vec2 X = ToWorld(pose, q + side * delta * n), dir = Rotate(pose.q, -side * n);
+			const double sMax = (Distance(X, pose.p) + 1.01 * R) / Length(dir);
+			const double s = FirstSurfaceCrossing(*heart, pose, X, dir, sMax);
+			const double ref = BruteFirstCrossing(*heart, pose, X, dir, sMax);
+			CAPTURE(alpha);
+			CAPTURE(i);
+			CAPTURE(delta);
+			REQUIRE(ref >= 0.0);
+			CHECK(std::fabs(s - ref) <= 2e-15 * (Length(X) + R));
+			CHECK(std::fabs(s - delta) <= 1e-3 * delta + 2e-15 * (Length(X) + R)); // (the normal line: s ≈ δ)
+			++checked;
+		}
+	}
+	CHECK(checked > 250);
+}
