@@ -88,6 +88,36 @@ std::vector<Pair> SmallHeartPairs()
 	return pairs;
 }
 
+// One-sided grid scales that a refinement from the parabola through the sample minimum and its
+// neighbours alone got wrong, and the sample's own start right.
+std::vector<Pair> SparseSamplesHeartPairs()
+{
+	std::vector<Pair> pairs;
+	{
+		// A heart of size 0.04 against one of size 42: B's samples lie 1.06 apart, 26 times the
+		// small heart's size; the parabola's vertex lay 0.13 from the sample, Newton from there
+		// failed, and the bracketing search after it stopped at the sample's 0.039. The pair was
+		// built touching at both own levels: the answer is the small heart's own α.
+		const double alpha = 0x1.84461fa7bf2cbp-11, big = 0x1.8eb073d42919p+9;
+		pairs.push_back({"heart 7.4e-4 vs heart 797", MakeHeart(alpha), MakeHeart(big), ref::RefShape::Heart(alpha),
+		                 ref::RefShape::Heart(big), Pose(Vec2(0x1.0f7ef968440f7p-3, -0x1.8367a4d887809p-1), -0x1.ad82e900813ap+0),
+		                 Pose(Vec2(0x1.6c4ec841b0a52p+4, 0x1.e74fabb8d8fb9p+3), 0x1.cf00236f4211p-2),
+		                 V{0.2952100684276293L, -0.6461203635321578L}, 0x1.84461fa7bf2cbp-11L});
+	}
+	{
+		// Two hearts of α = 6762 (size 123) overlapping deeply: B's surface passes 0.035 of the
+		// size from A's centre, where the cusp term shapes A's level, and one bracket of B's
+		// samples (5.8 long) holds two minima, 8.26 and 8.68. Newton from the vertex found the
+		// higher one, from the sample the lower.
+		const double alpha = 0x1.a6aa3747aa2d5p+12;
+		pairs.push_back({"hearts 6762 deep", MakeHeart(alpha), MakeHeart(alpha), ref::RefShape::Heart(alpha), ref::RefShape::Heart(alpha),
+		                 Pose(Vec2(0x1.177fd3a7d78d1p+8, -0x1.c4bdb6da3543bp+7), 0x1.700f72b0567bap+1),
+		                 Pose(Vec2(0x1.fc3a4b81feae9p+7, -0x1.3a0bb4fe91716p+8), 0x1.f28c078bfe66p-2),
+		                 V{277.58343174768913L, -229.20816205191218L}, 8.263950008121983L});
+	}
+	return pairs;
+}
+
 ref::SurfaceMinResult DenseScale(const Pair& p)
 {
 	return ref::SurfaceMin(p.ra, ref::Of(p.pa), p.rb, ref::Of(p.pb), p.rb.Own(), 8192, 8);
@@ -255,6 +285,21 @@ TEST_CASE("stress: the dense references of the known failures agree with the bui
 		const ref::CommonLevelResult r = ref::CommonLevelRef(p.ra, ref::Of(p.pa), p.rb, ref::Of(p.pb));
 		CHECK(double(std::fabs(r.level - p.builtLevel) / p.builtLevel) < 1e-13);
 		CHECK(double(ref::Len(r.point - p.built)) < 1e-7 * p.Size());
+	}
+}
+
+TEST_CASE("stress: one-sided heart scales on samples sparse against the level refine from the sample too")
+{
+	for (const Pair& p : SparseSamplesHeartPairs())
+	{
+		INFO(std::string(p.name));
+		const ref::SurfaceMinResult m = DenseScale(p);
+		CHECK(double(std::fabs(m.value - p.builtLevel) / p.builtLevel) < 1e-12);
+		CHECK(double(ref::Len(m.point - p.built)) < 1e-7 * p.Size());
+		const LevelResult r = SolveScaleA(*p.a, p.pa, *p.b, p.pb);
+		REQUIRE(r.Ok());
+		CHECK(double(std::fabs(r.level - p.builtLevel) / p.builtLevel) < 1e-9);
+		CHECK(double(ref::Dist(r.point, p.built)) < 1e-7 * p.Size());
 	}
 }
 
