@@ -63,7 +63,7 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 	// lies |x| from the shape's centre (x = X in the body frame), so a tolerance of a few
 	// roundings of |x| on s·|dir| is all a double point holds. (Relative to s alone, as without
 	// it, a crossing 1e-11 from X, where X is all but on the surface, asked for 1e-27: the level's
-	// own rounding then kept Newton from settling, and the bracket was halved 15 times or so, a
+	// own rounding then kept Newton from settling, and the bracket was halved 15 times or so:
 	// 4 % of a heart contact.)
 	const double len = Length(dir);
 	const double xtol = 4.0 * std::numeric_limits<double>::epsilon() * Length(ToBody(pose, X)) / len;
