@@ -123,6 +123,24 @@ ref::SurfaceMinResult DenseScale(const Pair& p)
 	return ref::SurfaceMin(p.ra, ref::Of(p.pa), p.rb, ref::Of(p.pb), p.rb.Own(), 8192, 8);
 }
 
+// The dense reference of a one-sided scale (A rescaled onto B's surface) agrees with the answer
+// the pair was built for.
+void CheckDenseScaleMatchesBuilt(const Pair& p)
+{
+	const ref::SurfaceMinResult m = DenseScale(p);
+	CHECK(double(std::fabs(m.value - p.builtLevel) / p.builtLevel) < 1e-12);
+	CHECK(double(ref::Len(m.point - p.built)) < 1e-7 * p.Size());
+}
+
+// The library's one-sided scale of the pair against the answer it was built for.
+void CheckScaleAMatchesBuilt(const Pair& p)
+{
+	const LevelResult r = SolveScaleA(*p.a, p.pa, *p.b, p.pb);
+	REQUIRE(r.Ok());
+	CHECK(double(std::fabs(r.level - p.builtLevel) / p.builtLevel) < 1e-9);
+	CHECK(double(ref::Dist(r.point, p.built)) < 1e-7 * p.Size());
+}
+
 // Needle pairs where Newton stops at its iteration cap (it would converge in 113 iterations in the
 // first) and the Newton polish of the min–max answer does too, so the raw min–max answer is
 // returned.
@@ -275,9 +293,7 @@ TEST_CASE("stress: the dense references of the known failures agree with the bui
 	for (const Pair& p : SmallHeartPairs())
 	{
 		INFO(std::string(p.name));
-		const ref::SurfaceMinResult m = DenseScale(p);
-		CHECK(double(std::fabs(m.value - p.builtLevel) / p.builtLevel) < 1e-12);
-		CHECK(double(ref::Len(m.point - p.built)) < 1e-7 * p.Size());
+		CheckDenseScaleMatchesBuilt(p);
 	}
 	for (const Pair& p : MinMaxPairs())
 	{
@@ -293,13 +309,8 @@ TEST_CASE("stress: one-sided heart scales on samples sparse against the level re
 	for (const Pair& p : SparseSamplesHeartPairs())
 	{
 		INFO(std::string(p.name));
-		const ref::SurfaceMinResult m = DenseScale(p);
-		CHECK(double(std::fabs(m.value - p.builtLevel) / p.builtLevel) < 1e-12);
-		CHECK(double(ref::Len(m.point - p.built)) < 1e-7 * p.Size());
-		const LevelResult r = SolveScaleA(*p.a, p.pa, *p.b, p.pb);
-		REQUIRE(r.Ok());
-		CHECK(double(std::fabs(r.level - p.builtLevel) / p.builtLevel) < 1e-9);
-		CHECK(double(ref::Dist(r.point, p.built)) < 1e-7 * p.Size());
+		CheckDenseScaleMatchesBuilt(p);
+		CheckScaleAMatchesBuilt(p);
 	}
 }
 
@@ -312,10 +323,7 @@ TEST_CASE("stress (known failure): the grid scale of a small heart against a lar
 	for (const Pair& p : SmallHeartPairs())
 	{
 		INFO(std::string(p.name));
-		const LevelResult r = SolveScaleA(*p.a, p.pa, *p.b, p.pb);
-		REQUIRE(r.Ok());
-		CHECK(double(std::fabs(r.level - p.builtLevel) / p.builtLevel) < 1e-9);
-		CHECK(double(ref::Dist(r.point, p.built)) < 1e-7 * p.Size());
+		CheckScaleAMatchesBuilt(p);
 	}
 }
 
