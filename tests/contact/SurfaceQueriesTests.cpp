@@ -9,6 +9,7 @@
 #include <doctest/doctest.h>
 
 #include "TestSupport.h"
+#include "contact/SurfaceCrossing.h"
 #include "geometry/GeometryReference.h"
 
 #include <b2analytic/b2analytic.h>
@@ -153,4 +154,56 @@ TEST_CASE("FirstSurfaceCrossing on hearts: a start all but on the surface finds 
 		}
 	}
 	CHECK(checked > 250);
+}
+
+TEST_CASE("FirstSurfaceCrossing guided by the slope at its start: the brute-force first crossing, the slope true or misleading")
+{
+	// The contact's march is given the level's slope at X along the line and heads for where
+	// the level is estimated to reach the surface. The estimate only steers the march: with
+	// the true slope, with one 30 times too steep or too shallow (the guess far short of the
+	// crossing or far past it), the first crossing is the reference's. Starts inside and
+	// outside, near the surface and across the notch, in lengths of dir 0.3 to 3.
+	Random rng(53);
+	int guidedRight = 0, found = 0;
+	for (double alpha : {0.4, 1.0, 3.0})
+	{
+		const auto heart = MakeHeart(alpha);
+		const double R = heart->BoundingRadius();
+		for (int i = 0; i < 200; ++i)
+		{
+			const Pose pose(Vec2(rng.Uniform(-1.0, 1.0), rng.Uniform(-1.0, 1.0)), rng.Angle());
+			const Vec2 X = pose.p + rng.Uniform(0.0, 1.5 * R) * Vec2(std::cos(rng.Angle()), std::sin(rng.Angle()));
+			const Vec2 x = ToBody(pose, X);
+			const double f0 = heart->Level(x) - alpha;
+			// Towards the surface along the gradient (the contact's line) or any way at all.
+			const double t = rng.Angle();
+			const Vec2 gradient = heart->Gradient(x);
+			const Vec2 along = i % 2 ? Vec2(std::cos(t), std::sin(t)) : (f0 < 0.0 ? 1.0 : -1.0) * Normalize(Rotate(pose.q, gradient));
+			const Vec2 dir = rng.LogUniform(0.3, 3.0) * along;
+			const double sMax = (Distance(X, pose.p) + 1.01 * R) / Length(dir);
+			const double slope = Dot(gradient, InvRotate(pose.q, dir));
+			const double ref = BruteFirstCrossing(*heart, pose, X, dir, sMax);
+			CAPTURE(alpha);
+			CAPTURE(i);
+			for (double mislead : {1.0, 30.0, 1.0 / 30.0})
+			{
+				CAPTURE(mislead);
+				const double s = FirstSurfaceCrossingFrom(*heart, pose, X, dir, sMax, f0, mislead * slope);
+				REQUIRE((s >= 0.0) == (ref >= 0.0));
+				if (ref < 0.0)
+					continue;
+				CHECK(std::fabs(s - ref) * Length(dir) <= 1e-10 * R);
+				if (mislead == 1.0)
+				{
+					++found;
+					// Where the level is quadratic along the line, the guess is close.
+					const double level0 = f0 + alpha;
+					const double est = -2.0 * level0 * (1.0 - std::sqrt(alpha / level0)) / slope;
+					guidedRight += f0 * slope < 0.0 && std::fabs(est - ref) <= 0.25 * ref;
+				}
+			}
+		}
+	}
+	CHECK(found > 300);
+	CHECK(guidedRight > found / 2); // (the guidance is used: 361 of 502 guesses within a quarter)
 }

@@ -6,6 +6,7 @@
 #include "contact/PairFrame.h"
 #include "contact/ResultChecks.h"
 #include "contact/SolverCore.h"
+#include "contact/SurfaceCrossing.h"
 #include "contact/WarmSlide.h"
 #include "geometry/SuperellipseTerms.h"
 #include "numerics/RootFinding.h"
@@ -209,7 +210,7 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 	// line may cross it more than once (a heart's lobes around a particle in its notch): there
 	// the crossing nearest X counts, leaving the shape along the direction when X is inside it,
 	// entering it behind X when X is outside.
-	auto extreme = [&](const Shape& s, const Pose& ps, Vec2 dir) -> Vec2 {
+	auto extreme = [&](const Shape& s, const Pose& ps, Vec2 dir, const Vec2* bodyGradient) -> Vec2 {
 		// A point on the surface to 1e-10 of the level (the grid's points are) is its own
 		// crossing; at a corner, where the level grows like |x|^{2/3} (a heart's tip), rounding
 		// of the point's coordinates moves the level by up to 1e-6.
@@ -232,7 +233,10 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 		if (inside || !s.IsConvex())
 		{
 			const Vec2 way = inside ? dir : -dir;
-			const double t = FirstSurfaceCrossing(s, ps, X, way, reach);
+			// (The level at X is known, and with the gradient there (the caller's, where it has
+			// it) the march heads for the estimated crossing instead of doubling its way there.)
+			const Vec2 gradient = bodyGradient ? *bodyGradient : s.Gradient(x);
+			const double t = FirstSurfaceCrossingFrom(s, ps, X, way, reach, level - own, Dot(gradient, InvRotate(ps.q, way)));
 			if (t >= 0.0)
 				return X + t * way;
 		}
@@ -246,8 +250,8 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 		}
 		return RadialPoint(s, ps, X); // the line misses a far-away particle
 	};
-	c.pointA = extreme(a, pa, n);
-	c.pointB = extreme(b, pb, -n);
+	c.pointA = extreme(a, pa, n, gradientA);
+	c.pointB = extreme(b, pb, -n, nullptr);
 	SetSeparation(c, touching);
 	return c;
 }
