@@ -399,17 +399,22 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		double lowest = std::numeric_limits<double>::infinity();
 		scratch.scannedRuns.clear();
 		// A run's samples are evaluated together (Shape::Levels: one virtual call a run, not one
-		// a sample); its end samples, shared with the neighbouring runs, may be evaluated again,
-		// to the same values. A NaN stops the scan (reported below).
+		// a sample), but for its end samples where a neighbouring run, scanned, shares them.
+		// A NaN stops the scan (reported below).
 		auto scan = [&](int g) {
 			scanned[g] = 1;
 			scratch.scannedRuns.push_back(g);
 			int first, last;
 			runSamples(g, first, last);
-			const int end = std::min(last, n - 1); // (sample n is sample 0: done apart below)
+			int end = std::min(last, n - 1); // (sample n is sample 0: done apart below)
+			if (evaluated(first))
+				++first;
+			if (end >= first && evaluated(end))
+				--end;
 			for (int k = first; k <= end; ++k)
 				inA[k] = ToWorld(walk.bInA, samples->point[k]);
-			a.Levels(&inA[first], end - first + 1, &value[first]);
+			if (end >= first)
+				a.Levels(inA.data() + first, end - first + 1, value.data() + first);
 			for (int k = first; k <= end; ++k)
 			{
 				stamp[k] = generation;
