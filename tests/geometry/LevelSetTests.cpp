@@ -4,6 +4,7 @@
 #include "GeometryReference.h"
 
 #include <cmath>
+#include <limits>
 
 using namespace b2a;
 using namespace b2a::test;
@@ -71,6 +72,54 @@ TEST_CASE("level sets: the radius grows with the level along every ray (nested l
 			CHECK(s.Level(1.01 * R * u) > L1);
 		}
 	}
+}
+
+TEST_CASE("level sets: the heart's Levels, two points at a time, is Level bit for bit at every magnitude")
+{
+	// The heart's Levels evaluates pairs of points in SSE2 lanes. Reference: Level, one point at
+	// a time, and the long-double level. Coordinates from 1e-150 to 1e150 (x² from 1e-300 to
+	// 1e300: the cube root's range ends at 1e-290 and 1e290, past which a pair takes the scalar
+	// path), both signs, and pairs with one lane on the axis, non-finite or out of range.
+	const auto heart = MakeHeart(1.3);
+	Random rng(12);
+	std::vector<Vec2> points;
+	for (int i = 0; i < 2000; ++i)
+	{
+		const double scale = rng.LogUniform(1e-150, 1e150);
+		const double angle = rng.Angle();
+		points.emplace_back(scale * std::cos(angle), scale * std::sin(angle));
+	}
+	const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+	for (const Vec2 odd : {Vec2(0.0, 0.7), Vec2(1e-160, 0.3), Vec2(1e160, 1.0), Vec2(inf, 1.0), Vec2(nan, 0.5), Vec2(0.2, nan)})
+	{
+		points.push_back(Vec2(0.4, -0.6)); // a pair: a plain point and the odd one, either order
+		points.push_back(odd);
+		points.push_back(odd);
+		points.push_back(Vec2(-0.9, 0.1));
+	}
+	std::vector<double> out(points.size());
+	heart->Levels(points.data(), int(points.size()), out.data());
+	int compared = 0;
+	for (size_t i = 0; i < points.size(); ++i)
+	{
+		CAPTURE(points[i].x);
+		CAPTURE(points[i].y);
+		const double level = heart->Level(points[i]);
+		if (std::isnan(level))
+		{
+			CHECK(std::isnan(out[i]));
+			continue;
+		}
+		CHECK(out[i] == level);
+		const long double x = points[i].x, y = points[i].y;
+		const long double ref = x * x + y * y - std::cbrt(x * x) * y;
+		if (std::isfinite(double(ref)))
+		{
+			CHECK(std::fabs(out[i] - double(ref)) <= 1e-14 * (std::fabs(double(x * x + y * y)) + std::fabs(double(std::cbrt(x * x) * y))));
+			++compared;
+		}
+	}
+	CHECK(compared > 2000);
 }
 
 TEST_CASE("level sets: Levels answers Level for each point, bit for bit, for every shape kind")

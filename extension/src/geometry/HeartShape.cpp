@@ -42,7 +42,31 @@ double HeartShape::Level(Vec2 x) const
 
 void HeartShape::Levels(const Vec2* x, int count, double* out) const
 {
-	for (int i = 0; i < count; ++i)
+	int i = 0;
+#if defined(B2A_SSE2_PAIRS)
+	// Two points at a time: the operations of HeartLevel and CubeRoot, in the same order, on
+	// the two lanes of SSE2 registers, so that each lane's value is Level's bit for bit (the
+	// divisions, three a cube root, are the level's cost, and the packed ones go through the
+	// divider two at a time). Pairs with a cube root outside CubeRoot's main range (0, NaN,
+	// infinities) take the scalar path.
+	static_assert(sizeof(Vec2) == 2 * sizeof(double), "Vec2 is two packed doubles");
+	const __m128d lowest = _mm_set1_pd(1e-290), highest = _mm_set1_pd(1e290);
+	for (; i + 2 <= count; i += 2)
+	{
+		const __m128d p0 = _mm_loadu_pd(&x[i].x), p1 = _mm_loadu_pd(&x[i + 1].x);
+		const __m128d px = _mm_unpacklo_pd(p0, p1), py = _mm_unpackhi_pd(p0, p1);
+		const __m128d ax = _mm_mul_pd(px, px);
+		if (_mm_movemask_pd(_mm_and_pd(_mm_cmpge_pd(ax, lowest), _mm_cmple_pd(ax, highest))) != 3)
+		{
+			out[i] = HeartLevel(x[i]);
+			out[i + 1] = HeartLevel(x[i + 1]);
+			continue;
+		}
+		const __m128d c = CubeRootPair(ax);
+		_mm_storeu_pd(out + i, _mm_sub_pd(_mm_add_pd(ax, _mm_mul_pd(py, py)), _mm_mul_pd(c, py)));
+	}
+#endif
+	for (; i < count; ++i)
 		out[i] = HeartLevel(x[i]);
 }
 

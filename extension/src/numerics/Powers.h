@@ -4,6 +4,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+// SSE2 is part of x86-64: paired evaluation there (CubeRootPair), the scalar loop elsewhere.
+#if defined(__x86_64__) || defined(_M_X64)
+#define B2A_SSE2_PAIRS 1
+#include <emmintrin.h>
+#endif
 
 namespace b2a
 {
@@ -23,11 +28,12 @@ inline double RootOf(double t, double e)
 
 /// A first guess of ∛x for x > 0 from the exponent bits: the bit pattern of x^{1/3} is about a
 /// third of x's plus a constant, within 4 % (CubeRoot and CubeRootBounds refine it).
+constexpr std::uint64_t kCubeRootGuessBias = 0x2a9f7893782da1ceULL; ///< CubeRootGuess's constant
 inline double CubeRootGuess(double x)
 {
 	std::uint64_t bits;
 	std::memcpy(&bits, &x, sizeof bits);
-	bits = bits / 3 + 0x2a9f7893782da1ceULL;
+	bits = bits / 3 + kCubeRootGuessBias;
 	double y;
 	std::memcpy(&y, &bits, sizeof y);
 	return y;
@@ -55,6 +61,26 @@ inline double CubeRoot(double x)
 	y += (ax / (y * y) - y) * (1.0 / 3.0);
 	return std::copysign(y, x);
 }
+
+#if defined(B2A_SSE2_PAIRS)
+/// CubeRoot of both lanes, each in CubeRoot's main range 1e-290 ≤ x ≤ 1e290 (the caller checks):
+/// CubeRoot's operations in its order, lane by lane, so that each lane is CubeRoot's bit for bit
+/// (the guess's integer division per lane in 64-bit registers: SSE2 has no 64-bit multiply).
+inline __m128d CubeRootPair(__m128d ax)
+{
+	const __m128i bits = _mm_castpd_si128(ax);
+	const std::uint64_t b0 = std::uint64_t(_mm_cvtsi128_si64(bits)) / 3 + kCubeRootGuessBias;
+	const std::uint64_t b1 = std::uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(bits, bits))) / 3 + kCubeRootGuessBias;
+	__m128d y = _mm_castsi128_pd(_mm_set_epi64x(static_cast<long long>(b1), static_cast<long long>(b0)));
+	const __m128d two = _mm_set1_pd(2.0);
+	for (int k = 0; k < 2; ++k)
+	{
+		const __m128d y3 = _mm_mul_pd(_mm_mul_pd(y, y), y);
+		y = _mm_mul_pd(y, _mm_div_pd(_mm_add_pd(y3, _mm_mul_pd(two, ax)), _mm_add_pd(_mm_mul_pd(two, y3), ax)));
+	}
+	return _mm_add_pd(y, _mm_mul_pd(_mm_sub_pd(_mm_div_pd(ax, _mm_mul_pd(y, y)), y), _mm_set1_pd(1.0 / 3.0)));
+}
+#endif
 
 /// Bounds lower ≤ ∛x ≤ upper for x ≥ 0, within 2e-5 of each other, at half CubeRoot's cost: for
 /// the level bounds of the grid method, which need a side, not the last digit. From
