@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
+#include <limits>
 
 using namespace b2a;
 using namespace b2a::test;
@@ -247,4 +249,51 @@ TEST_CASE("heart: LevelLowerBound and LevelUpperBound bracket the level everywhe
 		CHECK(h->LevelUpperBound(c, 0.0) - h->LevelLowerBound(c, 0.0) <= 2e-5 * cusp + 3e-15 * std::fabs(level));
 	}
 	CHECK(MakeSuperellipse(1.0, 0.5, 4.0, 4.0)->LevelUpperBound(Vec2(), 0.1) == std::numeric_limits<double>::infinity());
+}
+
+TEST_CASE("heart: LevelLowerBounds, two discs at a time, is LevelLowerBound bit for bit, and the default's is too")
+{
+	// The grid bounds its groups and runs through LevelLowerBounds, which the heart evaluates in
+	// pairs of SSE2 lanes. Reference: LevelLowerBound, one disc at a time. Discs from 1e-150 to
+	// 1e150 across, above and below the axis, on it (the cube root's argument 0), of radius 0,
+	// and pairs with one disc non-finite or beyond the ranges where the pair path applies.
+	const auto heart = MakeHeart(0.8);
+	Random rng(32);
+	std::vector<Vec2> centres;
+	std::vector<double> radii;
+	for (int i = 0; i < 2000; ++i)
+	{
+		const double scale = rng.LogUniform(1e-150, 1e150), angle = rng.Angle();
+		centres.emplace_back(scale * std::cos(angle), scale * std::sin(angle));
+		radii.push_back(i % 7 == 0 ? 0.0 : scale * rng.LogUniform(1e-6, 3.0));
+	}
+	const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+	const Vec2 odd[] = {Vec2(0.0, -0.5), Vec2(0.0, 0.5), Vec2(0.0, 0.0), Vec2(1e-160, 0.2), Vec2(1e160, 1.0), Vec2(inf, 0.0), Vec2(nan, 0.1)};
+	for (const Vec2 c : odd)
+		for (int order = 0; order < 2; ++order)
+		{
+			centres.push_back(order ? c : Vec2(0.3, -0.4));
+			radii.push_back(0.1);
+			centres.push_back(order ? Vec2(-0.6, 0.2) : c);
+			radii.push_back(c.x == 0.0 ? 0.0 : 0.05);
+		}
+	std::vector<double> out(centres.size());
+	heart->LevelLowerBounds(centres.data(), radii.data(), int(centres.size()), out.data());
+	for (size_t i = 0; i < centres.size(); ++i)
+	{
+		CAPTURE(centres[i].x);
+		CAPTURE(centres[i].y);
+		CAPTURE(radii[i]);
+		const double one = heart->LevelLowerBound(centres[i], radii[i]);
+		if (std::isnan(one))
+			CHECK(std::isnan(out[i]));
+		else
+			CHECK(out[i] == one);
+	}
+	// A shape without bounds of its own: the default loop answers −∞ for each.
+	const auto plain = MakeUserShape(UserHeartDef(0.8));
+	std::vector<double> none(3, 0.0);
+	plain->LevelLowerBounds(centres.data(), radii.data(), 3, none.data());
+	for (double b : none)
+		CHECK(b == -std::numeric_limits<double>::infinity());
 }

@@ -188,6 +188,10 @@ public:
 		(void)radius;
 		return -std::numeric_limits<double>::infinity();
 	}
+	/// LevelLowerBound of `count` discs (centres[i], radii[i]) into out[0 … count − 1], in one
+	/// call: the grid method bounds its groups and runs of samples together. The default calls
+	/// LevelLowerBound; the heart evaluates two discs at a time.
+	virtual void LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const;
 	/// An upper bound of the level over the disc |x − centre| ≤ radius (body frame), with which
 	/// a line search inside a non-convex particle steps over stretches that cannot leave it.
 	/// The default, +∞, means no bound: the search marches in steps finer than the samples.

@@ -289,7 +289,7 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 struct GridScratch
 {
 	std::vector<double> value, bound, groupBound;
-	std::vector<Vec2> inA;
+	std::vector<Vec2> inA, discs; // discs: centres of the discs being bounded, in A's frame
 	std::vector<std::uint32_t> stamp; // value[k] is this call's where stamp[k] == generation
 	std::uint32_t generation = 0;
 	std::vector<char> scanned; // per run: evaluated whole
@@ -353,24 +353,28 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	std::vector<double>& bound = scratch.bound;
 	std::vector<double>& groupBound = scratch.groupBound;
 	const double noBound = -std::numeric_limits<double>::infinity();
+	// Discs are bounded together (Shape::LevelLowerBounds: the heart does two at a time).
+	std::vector<Vec2>& discs = scratch.discs;
+	discs.resize(std::max(groups, runs));
+	auto boundDiscs = [&](const std::vector<Vec2>& centres, const std::vector<double>& radii, int first, int last, double* out) {
+		for (int i = first; i < last; ++i)
+			discs[i - first] = ToWorld(walk.bInA, centres[i]);
+		a.LevelLowerBounds(discs.data(), radii.data() + first, last - first, out);
+	};
 	if (grouped)
 	{
 		groupBound.resize(groups);
+		boundDiscs(samples->groupCentre, samples->groupRadius, 0, groups, groupBound.data());
 		for (int G = 0; G < groups && grouped; ++G)
-		{
-			groupBound[G] = a.LevelLowerBound(ToWorld(walk.bInA, samples->groupCentre[G]), samples->groupRadius[G]);
 			grouped = groupBound[G] > noBound; // else bound every run
-		}
 	}
 	if (bounded)
 		bound.resize(runs);
 	if (bounded && !grouped)
 	{
+		boundDiscs(samples->runCentre, samples->runRadius, 0, runs, bound.data());
 		for (int g = 0; g < runs && bounded; ++g)
-		{
-			bound[g] = a.LevelLowerBound(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]);
 			bounded = bound[g] > noBound; // else no bound: scan everything
-		}
 	}
 	// Group G's runs: their bounds, each at least the group's (a run's disc lies in its group's),
 	// so that a run without a bound of its own keeps the group's.
@@ -381,11 +385,9 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	auto boundRuns = [&](int G) {
 		int first, last;
 		groupRuns(G, first, last);
+		boundDiscs(samples->runCentre, samples->runRadius, first, last, bound.data() + first);
 		for (int g = first; g < last; ++g)
-		{
-			const double own = a.LevelLowerBound(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]);
-			bound[g] = own > groupBound[G] ? own : groupBound[G];
-		}
+			bound[g] = bound[g] > groupBound[G] ? bound[g] : groupBound[G];
 	};
 	if (bounded)
 	{

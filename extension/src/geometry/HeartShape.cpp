@@ -114,6 +114,50 @@ double HeartShape::LevelLowerBound(Vec2 centre, double radius) const
 	return near * near - (top > 0.0 ? upper : lower) * top;
 }
 
+void HeartShape::LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const
+{
+	int i = 0;
+#if defined(B2A_SSE2_PAIRS)
+	// LevelLowerBound's operations in its order on two lanes (as Levels does the level's). A
+	// pair whose |c|² or cube-root argument lies outside the ranges where Length takes the
+	// square root and CubeRootBounds iterates (or is not finite) takes the scalar path; a zero
+	// argument (a disc on the axis: exact bounds 0) is iterated on 1 and its bound zeroed.
+	const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
+	const __m128d lowest = _mm_set1_pd(1e-290), highest = _mm_set1_pd(1e290);
+	const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+	for (; i + 2 <= count; i += 2)
+	{
+		const __m128d c0 = _mm_loadu_pd(&centres[i].x), c1 = _mm_loadu_pd(&centres[i + 1].x);
+		const __m128d cx = _mm_unpacklo_pd(c0, c1), cy = _mm_unpackhi_pd(c0, c1);
+		const __m128d r = _mm_loadu_pd(radii + i);
+		const __m128d acx = _mm_and_pd(cx, magnitude);
+		const __m128d dx = _mm_max_pd(zero, _mm_sub_pd(acx, r)); // std::max(a, 0): NaN stays
+		const __m128d s = _mm_add_pd(_mm_mul_pd(cx, cx), _mm_mul_pd(cy, cy));
+		const __m128d near = _mm_max_pd(zero, _mm_sub_pd(_mm_mul_pd(_mm_sqrt_pd(s), _mm_set1_pd(1.0 - 1e-15)), r));
+		const __m128d top = _mm_add_pd(cy, r);
+		const __m128d up = _mm_cmpgt_pd(top, zero);
+		const __m128d reach = _mm_or_pd(_mm_and_pd(up, _mm_add_pd(acx, r)), _mm_andnot_pd(up, dx));
+		const __m128d x = _mm_mul_pd(reach, reach);
+		const __m128d flat = _mm_cmpeq_pd(x, zero);
+		const __m128d lengthOk = _mm_and_pd(_mm_cmpgt_pd(s, lowest), _mm_cmplt_pd(s, highest));
+		const __m128d rootOk = _mm_or_pd(flat, _mm_and_pd(_mm_cmpge_pd(x, lowest), _mm_cmple_pd(x, highest)));
+		if (_mm_movemask_pd(_mm_and_pd(lengthOk, rootOk)) != 3)
+		{
+			out[i] = LevelLowerBound(centres[i], radii[i]);
+			out[i + 1] = LevelLowerBound(centres[i + 1], radii[i + 1]);
+			continue;
+		}
+		const __m128d t = _mm_or_pd(_mm_and_pd(flat, one), _mm_andnot_pd(flat, x));
+		const __m128d y = CubeRootBoundsPair(t);
+		const __m128d upper = _mm_mul_pd(y, _mm_set1_pd(1.0 + 1e-14)), lower = _mm_mul_pd(y, _mm_set1_pd(1.0 / (1.0 + 1e-5)));
+		const __m128d side = _mm_andnot_pd(flat, _mm_or_pd(_mm_and_pd(up, upper), _mm_andnot_pd(up, lower)));
+		_mm_storeu_pd(out + i, _mm_sub_pd(_mm_mul_pd(near, near), _mm_mul_pd(side, top)));
+	}
+#endif
+	for (; i < count; ++i)
+		out[i] = LevelLowerBound(centres[i], radii[i]);
+}
+
 double HeartShape::LevelUpperBound(Vec2 centre, double radius) const
 {
 	// Over |x − c| ≤ ρ: x² + y² ≤ (|c| + ρ)². The cusp term −|x|^{2/3} y is at most

@@ -93,6 +93,12 @@ void Shape::Levels(const Vec2* x, int count, double* out) const
 		out[i] = Level(x[i]);
 }
 
+void Shape::LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const
+{
+	for (int i = 0; i < count; ++i)
+		out[i] = LevelLowerBound(centres[i], radii[i]);
+}
+
 double Shape::RadiusAt(Vec2 u, double level) const
 {
 	// Generic radial root of λ(t·u) = level. λ increases along the ray (star-shaped), so

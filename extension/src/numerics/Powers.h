@@ -63,15 +63,21 @@ inline double CubeRoot(double x)
 }
 
 #if defined(B2A_SSE2_PAIRS)
-/// CubeRoot of both lanes, each in CubeRoot's main range 1e-290 ≤ x ≤ 1e290 (the caller checks):
-/// CubeRoot's operations in its order, lane by lane, so that each lane is CubeRoot's bit for bit
-/// (the guess's integer division per lane in 64-bit registers: SSE2 has no 64-bit multiply).
-inline __m128d CubeRootPair(__m128d ax)
+/// CubeRootGuess of both lanes (the integer division per lane in 64-bit registers: SSE2 has no
+/// 64-bit multiply).
+inline __m128d CubeRootGuessPair(__m128d x)
 {
-	const __m128i bits = _mm_castpd_si128(ax);
+	const __m128i bits = _mm_castpd_si128(x);
 	const std::uint64_t b0 = std::uint64_t(_mm_cvtsi128_si64(bits)) / 3 + kCubeRootGuessBias;
 	const std::uint64_t b1 = std::uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(bits, bits))) / 3 + kCubeRootGuessBias;
-	__m128d y = _mm_castsi128_pd(_mm_set_epi64x(static_cast<long long>(b1), static_cast<long long>(b0)));
+	return _mm_castsi128_pd(_mm_set_epi64x(static_cast<long long>(b1), static_cast<long long>(b0)));
+}
+
+/// CubeRoot of both lanes, each in CubeRoot's main range 1e-290 ≤ x ≤ 1e290 (the caller checks):
+/// CubeRoot's operations in its order, lane by lane, so that each lane is CubeRoot's bit for bit.
+inline __m128d CubeRootPair(__m128d ax)
+{
+	__m128d y = CubeRootGuessPair(ax);
 	const __m128d two = _mm_set1_pd(2.0);
 	for (int k = 0; k < 2; ++k)
 	{
@@ -110,5 +116,19 @@ inline void CubeRootBounds(double x, double& lower, double& upper)
 	upper = y * (1.0 + 1e-14);
 	lower = y * (1.0 / (1.0 + 1e-5));
 }
+
+#if defined(B2A_SSE2_PAIRS)
+/// CubeRootBounds' iterate y of both lanes, each in its main range 1e-290 ≤ x ≤ 1e290 (the
+/// caller checks and takes upper = y·(1 + 1e-14), lower = y / (1 + 1e-5)): its operations in its
+/// order, lane by lane, so that each lane is CubeRootBounds' bit for bit.
+inline __m128d CubeRootBoundsPair(__m128d x)
+{
+	__m128d y = CubeRootGuessPair(x);
+	const __m128d two = _mm_set1_pd(2.0), third = _mm_set1_pd(1.0 / 3.0);
+	y = _mm_mul_pd(_mm_add_pd(_mm_mul_pd(two, y), _mm_div_pd(x, _mm_mul_pd(y, y))), third);
+	y = _mm_mul_pd(_mm_add_pd(_mm_mul_pd(two, y), _mm_div_pd(x, _mm_mul_pd(y, y))), third);
+	return y;
+}
+#endif
 
 } // namespace b2a
