@@ -138,6 +138,15 @@ bool SegmentMeetsRay(Vec2 u, Vec2 pl, Vec2 ph)
 	return Cross(u, pl) * Cross(u, ph) <= 0.0 && (Dot(u, pl) > 0.0 || Dot(u, ph) > 0.0);
 }
 
+// The segment pl–ph straddles one of the shape's corner rays.
+bool MeetsCornerRay(const Shape& s, Vec2 pl, Vec2 ph)
+{
+	for (const Vec2 u : s.CornerDirections())
+		if (SegmentMeetsRay(u, pl, ph))
+			return true;
+	return false;
+}
+
 // Where B's level-LB curve crosses the ray of one of A's corners (A's body frame) between the
 // neighbours pl and ph of a sample. Along that ray λA is not differentiable: at the heart's tip
 // it runs in a V-shaped valley, λA ≈ smooth + c|s|^{2/3} across it, so the crossing is a local
@@ -209,9 +218,9 @@ void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double
 // its neighbours: Newton from the sample on smooth stretches; at B's corners the corner or a
 // smooth minimum beside it; where A's corner ray crosses the bracket, the crossing (Newton has
 // no curvature there); anything else, the bracketing search.
-template <typename SamplePoint>
+template <typename SamplePoint, typename MarkSolved>
 void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int k, const SamplePoint& samplePoint,
-                     double valueBefore, double valueAfter, double& value, Vec2& point)
+                     const MarkSolved& markSolved, double valueBefore, double valueAfter, double& value, Vec2& point)
 {
 	const int n = samples.Count();
 	double lo, hi;
@@ -277,8 +286,21 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 		point = vertexBetter ? vertexPoint : sampleStartPoint;
 		return;
 	}
+	// A's corner rays: the crossing in each of the two sample segments beside the sample that
+	// meets one. The corner-ray pass of SolveGridScale solves the same segments (of the scanned
+	// runs) the same way; the ones solved here are marked, and it skips them (it solved them
+	// again, to the same crossing: 3 % of a heart contact).
 	const Pose& bInA = walk.bInA;
-	if (CornerRayCrossing(walk, ToWorld(bInA, pl), ToWorld(bInA, ph), value, point))
+	bool crossed = false;
+	for (const int i : {(k + n - 1) % n, k})
+	{
+		const Vec2 p = ToWorld(bInA, samplePoint(i)), q = ToWorld(bInA, samplePoint((i + 1) % n));
+		if (!MeetsCornerRay(walk.a, p, q))
+			continue;
+		markSolved(i);
+		crossed = CornerRayCrossing(walk, p, q, value, point) || crossed;
+	}
+	if (crossed)
 		return;
 	double theta = sampleTheta;
 	Refine(walk, lo, hi, theta, value);
@@ -291,6 +313,7 @@ struct GridScratch
 	std::vector<double> value, bound, groupBound;
 	std::vector<Vec2> inA, discs; // discs: centres of the discs being bounded, in A's frame
 	std::vector<std::uint32_t> stamp; // value[k] is this call's where stamp[k] == generation
+	std::vector<std::uint32_t> raySolved; // segment k → k + 1's corner-ray crossing solved where == generation
 	std::uint32_t generation = 0;
 	std::vector<char> scanned; // per run: evaluated whole
 	std::vector<int> scannedRuns; // those runs, in increasing order (bounded scans)
@@ -318,6 +341,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	if (int(scratch.stamp.size()) != n || ++scratch.generation == 0)
 	{
 		scratch.stamp.assign(n, 0);
+		scratch.raySolved.assign(n, 0);
 		scratch.generation = 1;
 	}
 	const std::uint32_t generation = scratch.generation;
@@ -542,6 +566,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		minima.resize(std::max(1, options.gridCandidates));
 
 	auto samplePoint = [&](int k) { return ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB); };
+	auto markSolved = [&](int i) { scratch.raySolved[i] = generation; };
 	double bestValue = value[minima[0]];
 	Vec2 bestPoint = samplePoint(minima[0]);
 	for (int k : minima)
@@ -554,7 +579,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			// lowest sample, taken when no sample is one, need not have been: no parabola then.)
 			const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
 			const double nan = std::numeric_limits<double>::quiet_NaN();
-			RefineCandidate(walk, *samples, k, samplePoint, evaluated(before) ? value[before] : nan,
+			RefineCandidate(walk, *samples, k, samplePoint, markSolved, evaluated(before) ? value[before] : nan,
 			                evaluated(after) ? value[after] : nan, v, point);
 		}
 		if (v < bestValue)
@@ -592,6 +617,8 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				{
 					if (SegmentMeetsRay(u, p, q))
 					{
+						if (scratch.raySolved[i] == generation)
+							break; // (solved by the refinement)
 						if (!bounded ||
 						    !(a.LevelLowerBound(0.5 * (p + q), 0.5 * Distance(p, q) + 2.0 * samples->maxDeviation) > bestValue))
 							CornerRayCrossing(walk, p, q, bestValue, bestPoint);
