@@ -20,7 +20,8 @@ public:
 
 	std::string Describe() const override;
 	double Level(Vec2 x) const override;
-	/// Level's loop, inline (no virtual call a point).
+	/// Level at two points at a time (SSE2 on x86-64), each Level's bit for bit; one at a time
+	/// elsewhere.
 	void Levels(const Vec2* x, int count, double* out) const override;
 	LevelDerivatives Derivatives(Vec2 x) const override;
 	double RadiusAt(Vec2 u, double level) const override;
