@@ -207,3 +207,22 @@ TEST_CASE("FirstSurfaceCrossing guided by the slope at its start: the brute-forc
 	CHECK(found > 300);
 	CHECK(guidedRight > found / 2); // (the guidance is used: 361 of 502 guesses within a quarter)
 }
+
+TEST_CASE("FirstSurfaceCrossing: a direction that is not finite has no crossing, even from a point on the surface")
+{
+	// Reference: the documented answer −1 for "no crossing"; a NaN or infinite direction gives no
+	// line to cross along.
+	const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+	for (const ShapePtr& s : {ShapePtr(MakeHeart(1.0)), ShapePtr(MakeSuperellipse(1.0, 0.5, 4.0, 4.0))})
+	{
+		const Pose pose(Vec2(0.2, -0.1), 0.3);
+		const Vec2 onSurface = ToWorld(pose, s->SurfacePoint(0.4));
+		for (const Vec2 X : {pose.p, onSurface, pose.p + Vec2(3.0, 0.0)})
+			for (const Vec2 dir : {Vec2(nan, 1.0), Vec2(inf, 0.0), Vec2(0.0, -inf)})
+			{
+				CAPTURE(s->Describe());
+				CHECK(FirstSurfaceCrossing(*s, pose, X, dir, 4.0) == -1.0);
+				CHECK(FirstSurfaceCrossingFrom(*s, pose, X, dir, 4.0, s->Level(ToBody(pose, X)) - s->SurfaceLevel(), 1.0) == -1.0);
+			}
+	}
+}

@@ -32,6 +32,8 @@ double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Ve
 {
 	const double own = shape.SurfaceLevel();
 	auto f = [&](double s) { return shape.Level(ToBody(pose, X + s * dir)) - own; };
+	if (!IsFinite(dir))
+		return -1.0; // (as when f0 was the level at X + 0·dir, NaN for such a dir)
 	if (f0 == 0.0)
 		return 0.0;
 	if (!std::isfinite(f0) || !(sMax > 0.0) || !std::isfinite(sMax))
