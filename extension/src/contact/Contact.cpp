@@ -234,9 +234,12 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 		{
 			const Vec2 way = inside ? dir : -dir;
 			// (The level at X is known, and with the gradient there (the caller's, where it has
-			// it) the march heads for the estimated crossing instead of doubling its way there.)
-			const Vec2 gradient = bodyGradient ? *bodyGradient : s.Gradient(x);
-			const double t = FirstSurfaceCrossingFrom(s, ps, X, way, reach, level - own, Dot(gradient, InvRotate(ps.q, way)));
+			// it) a non-convex shape's march heads for the estimated crossing instead of doubling
+			// its way there; a convex shape's crossing takes no slope.)
+			double slope = std::numeric_limits<double>::quiet_NaN();
+			if (!s.IsConvex())
+				slope = Dot(bodyGradient ? *bodyGradient : s.Gradient(x), InvRotate(ps.q, way));
+			const double t = FirstSurfaceCrossingFrom(s, ps, X, way, reach, level - own, slope);
 			if (t >= 0.0)
 				return X + t * way;
 		}

@@ -50,7 +50,7 @@ void HeartShape::Levels(const Vec2* x, int count, double* out) const
 	// divider two at a time). Pairs with a cube root outside CubeRoot's main range (0, NaN,
 	// infinities) take the scalar path.
 	static_assert(sizeof(Vec2) == 2 * sizeof(double), "Vec2 is two packed doubles");
-	const __m128d lowest = _mm_set1_pd(1e-290), highest = _mm_set1_pd(1e290);
+	const __m128d lowest = _mm_set1_pd(kCubeRootLowest), highest = _mm_set1_pd(kCubeRootHighest);
 	for (; i + 2 <= count; i += 2)
 	{
 		const __m128d p0 = _mm_loadu_pd(&x[i].x), p1 = _mm_loadu_pd(&x[i + 1].x);
@@ -120,10 +120,11 @@ void HeartShape::LevelLowerBounds(const Vec2* centres, const double* radii, int 
 #if defined(B2A_SSE2_PAIRS)
 	// LevelLowerBound's operations in its order on two lanes (as Levels does the level's). A
 	// pair whose |c|² or cube-root argument lies outside the ranges where Length takes the
-	// square root and CubeRootBounds iterates (or is not finite) takes the scalar path; a zero
+	// square root (the same bounds, exclusive) and CubeRootBounds iterates (or is not finite)
+	// takes the scalar path; a zero
 	// argument (a disc on the axis: exact bounds 0) is iterated on 1 and its bound zeroed.
 	const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
-	const __m128d lowest = _mm_set1_pd(1e-290), highest = _mm_set1_pd(1e290);
+	const __m128d lowest = _mm_set1_pd(kCubeRootLowest), highest = _mm_set1_pd(kCubeRootHighest);
 	const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
 	for (; i + 2 <= count; i += 2)
 	{
@@ -149,7 +150,7 @@ void HeartShape::LevelLowerBounds(const Vec2* centres, const double* radii, int 
 		}
 		const __m128d t = _mm_or_pd(_mm_and_pd(flat, one), _mm_andnot_pd(flat, x));
 		const __m128d y = CubeRootBoundsPair(t);
-		const __m128d upper = _mm_mul_pd(y, _mm_set1_pd(1.0 + 1e-14)), lower = _mm_mul_pd(y, _mm_set1_pd(1.0 / (1.0 + 1e-5)));
+		const __m128d upper = _mm_mul_pd(y, _mm_set1_pd(kCubeRootUpperMargin)), lower = _mm_mul_pd(y, _mm_set1_pd(kCubeRootLowerMargin));
 		const __m128d side = _mm_andnot_pd(flat, _mm_or_pd(_mm_and_pd(up, upper), _mm_andnot_pd(up, lower)));
 		_mm_storeu_pd(out + i, _mm_sub_pd(_mm_mul_pd(near, near), _mm_mul_pd(side, top)));
 	}

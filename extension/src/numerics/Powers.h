@@ -29,6 +29,10 @@ inline double RootOf(double t, double e)
 /// A first guess of ∛x for x > 0 from the exponent bits: the bit pattern of x^{1/3} is about a
 /// third of x's plus a constant, within 4 % (CubeRoot and CubeRootBounds refine it).
 constexpr std::uint64_t kCubeRootGuessBias = 0x2a9f7893782da1ceULL; ///< CubeRootGuess's constant
+/// The range of x where CubeRoot and CubeRootBounds iterate (and their SSE2 pairs apply).
+constexpr double kCubeRootLowest = 1e-290, kCubeRootHighest = 1e290;
+/// CubeRootBounds' margins on its iterate: upper = y·kCubeRootUpperMargin, lower = y·kCubeRootLowerMargin.
+constexpr double kCubeRootUpperMargin = 1.0 + 1e-14, kCubeRootLowerMargin = 1.0 / (1.0 + 1e-5);
 inline double CubeRootGuess(double x)
 {
 	std::uint64_t bits;
@@ -50,7 +54,7 @@ inline double CubeRootGuess(double x)
 inline double CubeRoot(double x)
 {
 	const double ax = std::fabs(x);
-	if (!(ax >= 1e-290 && ax <= 1e290))
+	if (!(ax >= kCubeRootLowest && ax <= kCubeRootHighest))
 		return x == 0.0 ? x : std::cbrt(x);
 	double y = CubeRootGuess(ax);
 	for (int k = 0; k < 2; ++k)
@@ -103,7 +107,7 @@ inline void CubeRootBounds(double x, double& lower, double& upper)
 		lower = upper = 0.0;
 		return;
 	}
-	if (!(x >= 1e-290 && x <= 1e290))
+	if (!(x >= kCubeRootLowest && x <= kCubeRootHighest))
 	{
 		const double r = std::cbrt(x);
 		lower = r * (1.0 - 1e-15);
@@ -113,13 +117,13 @@ inline void CubeRootBounds(double x, double& lower, double& upper)
 	double y = CubeRootGuess(x);
 	y = (2.0 * y + x / (y * y)) * (1.0 / 3.0);
 	y = (2.0 * y + x / (y * y)) * (1.0 / 3.0);
-	upper = y * (1.0 + 1e-14);
-	lower = y * (1.0 / (1.0 + 1e-5));
+	upper = y * kCubeRootUpperMargin;
+	lower = y * kCubeRootLowerMargin;
 }
 
 #if defined(B2A_SSE2_PAIRS)
 /// CubeRootBounds' iterate y of both lanes, each in its main range 1e-290 ≤ x ≤ 1e290 (the
-/// caller checks and takes upper = y·(1 + 1e-14), lower = y / (1 + 1e-5)): its operations in its
+/// caller checks and applies kCubeRootUpperMargin and kCubeRootLowerMargin): its operations in its
 /// order, lane by lane, so that each lane is CubeRootBounds' bit for bit.
 inline __m128d CubeRootBoundsPair(__m128d x)
 {
