@@ -106,9 +106,9 @@ struct SuperellipsePairPoint
 	bool valid = false;   ///< false: compute them as ContactFromLevel does
 };
 /// Where SolveSuperellipsePairLevel hands a cold solve over to FinishSuperellipseContact: once a
-/// full Newton step on the gauges moved the point less than `below` (in units of the pair's
-/// size), the solve stops there, returns a failed result ("handed over") and fills `point` and
-/// `multiplier`.
+/// full Newton step on the gauges (not cut by the trust region) would move the point less than
+/// `below` (in units of the pair's size), the solve stops, returns a failed result ("handed
+/// over") and fills `point` and `multiplier` with the step's end, not evaluated.
 struct SuperellipseHandOver
 {
 	double below = 5e-2;    ///< the step, in units of the pair's size, below which it hands over
