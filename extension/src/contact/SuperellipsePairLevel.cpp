@@ -140,6 +140,31 @@ bool CentreLineStart(const PairInA& p, double& t)
 	return true; // a start, not an answer: the bracket is narrow by now
 }
 
+// A start for the point of the superellipse with terms t (integer exponents ≥ 3, in the pair's
+// units) whose normal is along d: SupportNear(d, 0) with RootGuess's roots (SupportNear's
+// CubeRoot for n = 4, pow for n = 8, exp and log for n ≠ m were 5 % of a cold contact). With e = (a·dx, b·dy)
+// and κ = max(|ex|/n, |ey|/m), the point of the bounding box's side where the level curve's
+// normal is along d is X = (|ex|/(nκ))^{1/(n−1)}, Y = (|ey|/(mκ))^{1/(m−1)} (Lagrange's
+// condition with one of X, Y equal to 1). For n = m it is scaled onto the surface, f^{1/n}
+// (scaling keeps the normal then): the support point itself.
+Vec2 StartSupport(const SuperellipseTerms& t, Vec2 d)
+{
+	const double a = 1.0 / t.invA, b = 1.0 / t.invB;
+	const double rx = std::fabs(a * d.x) / t.n, ry = std::fabs(b * d.y) / t.m;
+	double X = 1.0, Y = 1.0;
+	if (rx >= ry)
+		Y = RootGuess(ry / rx, t.mInt - 1);
+	else
+		X = RootGuess(rx / ry, t.nInt - 1);
+	if (t.nInt == t.mInt)
+	{
+		const double inv = 1.0 / RootOf(PowAbs(X, t.n, t.nInt) + PowAbs(Y, t.m, t.mInt), t.n);
+		X *= inv;
+		Y *= inv;
+	}
+	return Vec2(a * std::copysign(X, d.x), b * std::copysign(Y, d.y));
+}
+
 // The cold start of blocky pairs (Blocky: every exponent at least 3): the contact of the
 // bounding boxes. Scaled about their centres by s, two boxes touch where s first reaches the
 // largest, over the four face normals u of the two boxes, of |c·u| / (hA(u) + hB(u)), h the box's
@@ -179,8 +204,13 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 	// side of the bounding box where the level curve's normal is along the direction, no Newton
 	// step. As a start it is at least as good and cheaper (800 bench-like cold n = 4, m = 8
 	// contacts: 4.52 iterations and 5,110 instructions each, against 4.73 and 6,030 with the
-	// exact support, and 4.73 and 5,740 with three steps towards it).
-	xi = face < 2 ? p.c + k * Rotate(p.r, b.SupportNear(InvRotate(p.r, -u), 0)) : k * a.SupportNear(u, 0);
+	// exact support, and 4.73 and 5,740 with three steps towards it). Integer exponents take
+	// StartSupport, SupportNear(d, 0) with guessed roots: n = 4 and (4, 8) cold contacts 4 %
+	// cheaper, n = 8 1.5 %, at the same Newton iterations (the finish's 2.78 -> 2.91 for n = 8).
+	if (IntegerExponents(p.a) && IntegerExponents(p.b))
+		xi = face < 2 ? p.c + scale * Rotate(p.r, StartSupport(p.b, InvRotate(p.r, -u))) : scale * StartSupport(p.a, u);
+	else
+		xi = face < 2 ? p.c + k * Rotate(p.r, b.SupportNear(InvRotate(p.r, -u), 0)) : k * a.SupportNear(u, 0);
 	return scale > 0.0 && IsFinite(xi);
 }
 
