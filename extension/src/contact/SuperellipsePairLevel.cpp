@@ -296,15 +296,19 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	Point points[2];
 	Point* current = &points[0];
 	Point* trial = &points[1];
-	evaluate(*current, xi, mu);
-	if (mu == 0.0)
+	const bool cold = mu == 0.0;
+	if (cold)
 	{
-		// Cold: μ balancing the gradients at the start, |∇ψA|/|∇ψB| (GeometricStart's).
+		// μ balancing the gradients at the start, |∇ψA|/|∇ψB| (GeometricStart's).
+		current->xi = xi;
+		Evaluate(p, xi, current->A, current->B);
 		const double ga = std::sqrt(current->A.gx * current->A.gx + current->A.gy * current->A.gy);
 		const double gb = std::sqrt(current->B.gx * current->B.gx + current->B.gy * current->B.gy);
 		current->mu = ga > 0.0 && gb > 0.0 && std::isfinite(ga / gb) ? ga / gb : 1.0;
 		current->relative = Residual(current->A, current->B, current->mu, current->r);
 	}
+	else
+		evaluate(*current, xi, mu);
 	const double trust = std::max(0.5, 0.5 * Length(p.c));
 	const int cap = std::max(1, options.maxIterations);
 	double previousXi = 0.0, previousMu = 0.0; // the last full step's size in ξ and in μ/μ (0: none yet)
@@ -317,10 +321,14 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 			result.failure = "non-finite level value or derivative during Newton iteration";
 			return result;
 		}
-		if (it == 1)
+		if (it == 1 && !cold)
 		{
 			// The least-squares multiplier for the start point, μ = −∇ψA·∇ψB / |∇ψB|², where it
-			// lowers the residual (a stale multiplier makes Newton crawl).
+			// lowers the residual (a stale multiplier makes Newton crawl). Not after a cold start:
+			// there it never does. With c = −cos∠(∇ψA, ∇ψB) ∈ (0, 1] (μ > 0 needs it), the
+			// gradient part of the relative residual is (1 − c²)/(1 + c²) at the least-squares μ
+			// and 1 − c at |∇ψA|/|∇ψB|, and (1 + c)/(1 + c²) ≥ 1; the level part does not depend
+			// on μ.
 			const double gb2 = q.B.gx * q.B.gx + q.B.gy * q.B.gy;
 			const double muLs = gb2 > 0.0 ? -(q.A.gx * q.B.gx + q.A.gy * q.B.gy) / gb2 : 0.0;
 			if (muLs > 0.0 && std::isfinite(muLs) && muLs != q.mu)
