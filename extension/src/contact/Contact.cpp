@@ -380,7 +380,16 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 				return c;
 		}
 		else
+		{
 			hand = &handOver;
+			// For n = m on both shapes (each gauge a norm, f = ψ^n along a ray) the raw levels'
+			// Newton takes over from gauge steps of 10 % of the size as surely as from 5 %, one
+			// gauge evaluation earlier in a quarter of the pairs: cold n = 4 contacts 4 % cheaper,
+			// n = 8 2 %. With n ≠ m it declines 6 % of them from 10 % (n = 4, m = 8: 2 % dearer).
+			const SuperellipseTerms &ta = sa->Terms(), &tb = sb->Terms();
+			if (ta.nInt == ta.mInt && tb.nInt == tb.mInt)
+				handOver.below = 0.1;
+		}
 	}
 	SuperellipsePairPoint at;
 	LevelResult level = CheckedResult(SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at, hand));
