@@ -34,6 +34,7 @@ struct PairInA
 	Vec2 c;
 	Rot r;
 	double q = 1.0, invQ = 1.0; // the gauge's power (PairFrame::power) and its inverse
+	bool integer = false;       // IntegerExponents for both shapes
 };
 
 // ψ = f^{1/q}: ∇ψ = ψ'∇f, ∇²ψ = ψ'∇²f + ψ''∇f∇fᵀ with ψ' = ψ/(qf), ψ'' = ψ'(1/q − 1)/f (the
@@ -68,14 +69,25 @@ inline void ToGauge(const PairInA& p, double f, double fx, double fy, double hxx
 
 // Both shapes at ξ (A's frame, units of s). A's derivatives are already in its frame; B's are
 // turned by r: ∇f ↦ R∇f and the diagonal ∇²f = diag(hx, hy) ↦ R diag(hx, hy) Rᵀ.
+// f, ∇f and ∇²f's diagonal in the shape's axes: IntegerSuperellipseDerivatives where both
+// shapes' exponents are integers ≥ 2 (the same values, inline and without the general form's
+// cases), else RawSuperellipseDerivatives.
+inline AxisDerivatives AxisDerivativesAt(const SuperellipseTerms& t, Vec2 x, bool integer)
+{
+	if (integer)
+		return IntegerSuperellipseDerivatives(t, x.x, x.y);
+	const LevelDerivatives d = RawSuperellipseDerivatives(t, x);
+	return {d.value, d.gradient.x, d.gradient.y, d.hessian.xx, d.hessian.yy};
+}
+
 inline void Evaluate(const PairInA& p, Vec2 xi, Gauge& ga, Gauge& gb)
 {
-	const LevelDerivatives da = RawSuperellipseDerivatives(p.a, xi);
-	ToGauge(p, da.value, da.gradient.x, da.gradient.y, da.hessian.xx, 0.0, da.hessian.yy, ga);
-	const LevelDerivatives db = RawSuperellipseDerivatives(p.b, InvRotate(p.r, xi - p.c));
-	const double c = p.r.c, s = p.r.s, hx = db.hessian.xx, hy = db.hessian.yy;
-	const Vec2 grad = Rotate(p.r, db.gradient);
-	ToGauge(p, db.value, grad.x, grad.y, c * c * hx + s * s * hy, c * s * (hx - hy), s * s * hx + c * c * hy, gb);
+	const AxisDerivatives da = AxisDerivativesAt(p.a, xi, p.integer);
+	ToGauge(p, da.f, da.gx, da.gy, da.hx, 0.0, da.hy, ga);
+	const AxisDerivatives db = AxisDerivativesAt(p.b, InvRotate(p.r, xi - p.c), p.integer);
+	const double c = p.r.c, s = p.r.s, hx = db.hx, hy = db.hy;
+	const Vec2 grad = Rotate(p.r, Vec2(db.gx, db.gy));
+	ToGauge(p, db.f, grad.x, grad.y, c * c * hx + s * s * hy, c * s * (hx - hy), s * s * hx + c * c * hy, gb);
 }
 
 // The residual (∇ψA + μ∇ψB, ψA − ψB) and its size relative to the size of its terms (the
@@ -207,7 +219,7 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 	// exact support, and 4.73 and 5,740 with three steps towards it). Integer exponents take
 	// StartSupport, SupportNear(d, 0) with guessed roots: n = 4 and (4, 8) cold contacts 4 %
 	// cheaper, n = 8 1.5 %, at the same Newton iterations (the finish's 2.78 -> 2.91 for n = 8).
-	if (IntegerExponents(p.a) && IntegerExponents(p.b))
+	if (p.integer)
 		xi = face < 2 ? p.c + scale * Rotate(p.r, StartSupport(p.b, InvRotate(p.r, -u))) : scale * StartSupport(p.a, u);
 	else
 		xi = face < 2 ? p.c + k * Rotate(p.r, b.SupportNear(InvRotate(p.r, -u), 0)) : k * a.SupportNear(u, 0);
@@ -254,6 +266,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	p.r = rel.q;
 	p.q = std::min(a.LevelPower(), b.LevelPower());
 	p.invQ = 1.0 / p.q;
+	p.integer = IntegerExponents(p.a) && IntegerExponents(p.b);
 
 	Vec2 xi;
 	double mu = 1.0;
