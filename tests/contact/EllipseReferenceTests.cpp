@@ -488,3 +488,41 @@ TEST_CASE("ellipses: a cold start between needles takes the best of five support
 	}
 	tally.Check(180, 6, 3.5);
 }
+
+TEST_CASE("ellipses: the Perram-Wertheim solver is exact at any size, from 1e-15 to 1e15, cold and warm")
+{
+	// Its Halley loop carries h, h' and h'' multiplied by up to the sixth power of det(H) (to
+	// spare a division per step), which scales as size⁻⁴; beyond det 1e±20 it rescales by a
+	// power of two. The same pairs at sizes 1e-15 to 1e15 (det up to 1e±62, aspect up to 100) must
+	// give the reference's level, point and multiplier (measured: every size within 5e-15 of the
+	// reference, like size 1; without the rescaling the first pair at 1e-15 is not solved).
+	const auto cases = Cases(7313, 10, {0.3L, 1.0L + 1e-6L, 10.0L});
+	double worst = 0.0;
+	int solves = 0;
+	for (double size : {1e-15, 1e-6, 1.0, 1e6, 1e15})
+		for (const EllipseCase& base : cases)
+		{
+			EllipseCase c = base;
+			for (double* v : {&c.aA, &c.bA, &c.aB, &c.bB})
+				*v *= size;
+			c.pa = Pose(size * base.pa.p, base.pa.q.Angle());
+			c.pb = Pose(size * base.pb.p, base.pb.q.Angle());
+			const auto a = MakeEllipse(c.aA, c.bA), b = MakeEllipse(c.aB, c.bB);
+			const ref::PwResult want = ref::PerramWertheim(QuadA(c), QuadB(c));
+			const LD scale = std::sqrt(want.level) * (std::max(c.aA, c.bA) + std::max(c.aB, c.bB));
+			INFO("size " << size << " A=(" << c.aA << "," << c.bA << ") B=(" << c.aB << "," << c.bB << ") C_ref=" << double(want.level));
+			WarmStart warm;
+			for (int pass = 0; pass < 2; ++pass) // cold, then warm from its own answer
+			{
+				const LevelResult r = SolveCommonLevel(*a, c.pa, *b, c.pb, MethodChoice::automatic, {}, &warm);
+				REQUIRE(r.Ok());
+				REQUIRE(r.method == SolveMethod::ellipsePair);
+				worst = std::max({worst, LevelErr(r.level, want.level), double(ref::Dist(r.point, want.point) / scale),
+				                  double(std::fabs(LD(r.multiplier) - want.mu) / want.mu)});
+				++solves;
+			}
+		}
+	CAPTURE(worst);
+	CHECK(solves == 300);
+	CHECK(worst <= 1e-12);
+}
