@@ -134,8 +134,9 @@ struct PowerOfTwo
 	double value, inverse;
 };
 
-// The power of two σ with σ·x in [1, 2) for a positive normal x (from the exponent bits; the
-// exponent is clamped to double's normal range; zero, a subnormal or NaN give 2^1022).
+// The power of two σ with σ·x in [1, 2) for a positive normal x, from the exponent bits (the
+// exponent clamped to double's normal range: zero and subnormals give 2^1023, infinities and
+// NaN 2^−1022, and the solve then fails on its own tests).
 #if defined(__GNUC__)
 __attribute__((noinline)) // (a call, so that the caller branches around it: see SolveEllipsePairLevel)
 #endif
@@ -262,12 +263,12 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 			r.failure = "ellipse pair: singular weighted level matrix";
 			return r;
 		}
-		// The step does not wait for 1/det. With adj(H) = det·H⁻¹ and k = σ·det (σ below):
+		// The step does not wait for 1/det. With adj(H) = det·H⁻¹ and k = σ·det (σ above):
 		// X = adj(H)·s·σMB·r = k·x, and from it, with σMA and σMB (x − r, ∇λ and d are linear in
 		// x), d̃ = σk·d and w̃ = adj(H)·d̃ = k²·w, so that h, h' and Q' are computed σk², σk³ and
 		// k⁴ times over. The Halley step −h·h'/(h'² − h·Q') is then −k·h̃·h̃'/(h̃'² − σ·h̃·Q̃'), and
 		// its tests take factors σ and σk; 1/det, for x and w themselves, runs beside the step
-		// (a warm 1.5:1 contact 128 -> 121 ns, a cold 10:1 one 191 -> 178). The scaled quantities
+		// (a warm 1.5:1 contact 128 -> 122 ns, a cold 10:1 one 192 -> 181). The scaled quantities
 		// keep the plain names (h, slope, q) below.
 		const double inv = 1.0 / det;
 		const double k = sigma.value * det; // exact

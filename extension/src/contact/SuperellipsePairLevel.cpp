@@ -67,8 +67,6 @@ inline void ToGauge(const PairInA& p, double f, double fx, double fy, double hxx
 	g.hyy = d1 * hyy + d2 * fy * fy;
 }
 
-// Both shapes at ξ (A's frame, units of s). A's derivatives are already in its frame; B's are
-// turned by r: ∇f ↦ R∇f and the diagonal ∇²f = diag(hx, hy) ↦ R diag(hx, hy) Rᵀ.
 // f, ∇f and ∇²f's diagonal in the shape's axes: IntegerSuperellipseDerivatives where both
 // shapes' exponents are integers ≥ 2 (the same values, inline and without the general form's
 // cases), else RawSuperellipseDerivatives.
@@ -80,6 +78,8 @@ inline AxisDerivatives AxisDerivativesAt(const SuperellipseTerms& t, Vec2 x, boo
 	return {d.value, d.gradient.x, d.gradient.y, d.hessian.xx, d.hessian.yy};
 }
 
+// Both shapes at ξ (A's frame, units of s). A's derivatives are already in its frame; B's are
+// turned by r: ∇f ↦ R∇f and the diagonal ∇²f = diag(hx, hy) ↦ R diag(hx, hy) Rᵀ.
 inline void Evaluate(const PairInA& p, Vec2 xi, Gauge& ga, Gauge& gb)
 {
 	const AxisDerivatives da = AxisDerivativesAt(p.a, xi, p.integer);
@@ -154,8 +154,8 @@ bool CentreLineStart(const PairInA& p, double& t)
 
 // A start for the point of the superellipse with terms t (integer exponents ≥ 3, in the pair's
 // units) whose normal is along d: SupportNear(d, 0) with RootGuess's roots (SupportNear's
-// CubeRoot for n = 4, pow for n = 8, exp and log for n ≠ m were 5 % of a cold contact). With e = (a·dx, b·dy)
-// and κ = max(|ex|/n, |ey|/m), the point of the bounding box's side where the level curve's
+// CubeRoot for n = 4, pow for n = 8, exp and log for n ≠ m were 5 % of a cold contact). With
+// e = (a·dx, b·dy) and κ = max(|ex|/n, |ey|/m), the point of the bounding box's side where the level curve's
 // normal is along d is X = (|ex|/(nκ))^{1/(n−1)}, Y = (|ey|/(mκ))^{1/(m−1)} (Lagrange's
 // condition with one of X, Y equal to 1). For n = m it is scaled onto the surface, f^{1/n}
 // (scaling keeps the normal then): the support point itself.
