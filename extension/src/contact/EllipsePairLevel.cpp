@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <typeinfo>
 
 namespace b2a
@@ -134,23 +132,16 @@ struct PowerOfTwo
 	double value, inverse;
 };
 
-// The power of two σ with σ·x in [1, 2) for a positive normal x, from the exponent bits (the
-// exponent clamped to double's normal range: zero and subnormals give 2^1023, infinities and
-// NaN 2^−1022, and the solve then fails on its own tests).
+// The power of two σ with σ·x in [1, 2) for a positive normal x, and its inverse, both normal
+// (the exponent clamped to ±1022: zero and NaN give 2^1022, infinities 2^−1022, and the solve
+// then fails on its own tests).
 #if defined(__GNUC__)
 __attribute__((noinline)) // (a call, so that the caller branches around it: see SolveEllipsePairLevel)
 #endif
 PowerOfTwo PowerOfTwoInto12(double x)
 {
-	std::uint64_t bits;
-	std::memcpy(&bits, &x, sizeof bits);
-	const int e = int((bits >> 52) & 0x7ff);           // biased exponent of x: x = 2^(e − 1023)·1.f
-	const int down = std::clamp(2046 - e, 1, 2046), up = std::clamp(e, 1, 2046);
-	const std::uint64_t vb = std::uint64_t(down) << 52, ib = std::uint64_t(up) << 52;
-	PowerOfTwo p;
-	std::memcpy(&p.value, &vb, sizeof vb);   // 2^(1023 − e)
-	std::memcpy(&p.inverse, &ib, sizeof ib); // 2^(e − 1023)
-	return p;
+	const int e = std::clamp(std::ilogb(x), -1022, 1022);
+	return {std::ldexp(1.0, -e), std::ldexp(1.0, e)};
 }
 
 } // namespace
