@@ -225,7 +225,7 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 	const int n = samples.Count();
 	double lo, hi;
 	samples.NeighbourAngles(k, lo, hi);
-	const Vec2 pl = samplePoint((k + n - 1) % n), ph = samplePoint((k + 1) % n), sample = point;
+	const Vec2 pl = samplePoint((k + n - 1) % n), ph = samplePoint((k + 1) % n);
 	const double reach = Distance(pl, ph);
 	const double sampleTheta = samples.angle[k], sampleValue = value;
 	if (IsCorner(walk.b, sampleTheta))
@@ -290,17 +290,15 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 	// meets one. The corner-ray pass of SolveGridScale solves the same segments (of the scanned
 	// runs) the same way; the ones solved here are marked, and it skips them (it solved them
 	// again, to the same crossing: 3 % of a heart contact).
-	// (The segments' ends are the three samples at hand: point, still the sample's, and its
-	// neighbours.)
 	const Pose& bInA = walk.bInA;
-	const Vec2 ends[3] = {ToWorld(bInA, pl), ToWorld(bInA, sample), ToWorld(bInA, ph)};
 	bool crossed = false;
-	for (int j = 0; j < 2; ++j)
+	for (const int i : {(k + n - 1) % n, k})
 	{
-		if (!MeetsCornerRay(walk.a, ends[j], ends[j + 1]))
+		const Vec2 p = ToWorld(bInA, samplePoint(i)), q = ToWorld(bInA, samplePoint((i + 1) % n));
+		if (!MeetsCornerRay(walk.a, p, q))
 			continue;
-		markSolved((k + n - 1 + j) % n); // segment i → i + 1 starts at sample k − 1 + j
-		crossed = CornerRayCrossing(walk, ends[j], ends[j + 1], value, point) || crossed;
+		markSolved(i);
+		crossed = CornerRayCrossing(walk, p, q, value, point) || crossed;
 	}
 	if (crossed)
 		return;
