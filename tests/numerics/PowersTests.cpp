@@ -21,7 +21,7 @@ double Ulps(double got, long double want)
 }
 } // namespace
 
-TEST_CASE("powers: CubeRoot is within an ulp of the exact cube root from 1e-290 to 1e290, both signs")
+TEST_CASE("powers: CubeRoot is within 0.51 ulp of the exact cube root from 1e-290 to 1e290, both signs")
 {
 	// (glibc's std::cbrt, which CubeRoot hands the rest of the range to, is up to 3.2 ulp off.)
 	Random rng(5);
@@ -37,7 +37,7 @@ TEST_CASE("powers: CubeRoot is within an ulp of the exact cube root from 1e-290 
 	for (double r : {1.0, 2.0, 3.0, 10.0, 0.5, 1e-90, 7e90})
 		worst = std::max(worst, Ulps(CubeRoot(r * r * r), cbrtl((long double)(r * r * r))));
 	CAPTURE(worst);
-	CHECK(worst <= 1.0);
+	CHECK(worst <= 0.51); // all but the last rounding exact to about 1e-18
 }
 
 TEST_CASE("powers: RootGuess is within 6.2 % of the k-th root for 0 < x <= 1, and exact where it must be")
