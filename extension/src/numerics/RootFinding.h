@@ -160,7 +160,7 @@ ScalarResult FindRootNewtonSafe(FDF&& fdf, double a, double b, double fa, double
 	double neg = fa < 0.0 ? a : b, pos = fa < 0.0 ? b : a;
 	double fneg = fa < 0.0 ? fa : fb, fpos = fa < 0.0 ? fb : fa;
 	double x = a - fa * ((b - a) / (fb - fa));
-	if (!(x > std::fmin(a, b) && x < std::fmax(a, b)))
+	if (!(x > std::min(a, b) && x < std::max(a, b)))
 		x = 0.5 * (a + b);
 	const double width = std::fabs(b - a);
 	double before = width, last = width; // the steps before last and last
@@ -186,7 +186,7 @@ ScalarResult FindRootNewtonSafe(FDF&& fdf, double a, double b, double fa, double
 		}
 		if (fx < 0.0) { neg = x; fneg = fx; }
 		else { pos = x; fpos = fx; }
-		const double lo = std::fmin(neg, pos), hi = std::fmax(neg, pos);
+		const double lo = std::min(neg, pos), hi = std::max(neg, pos); // (finite: not fmin, a call)
 		const double tol = 2.0 * eps * std::fabs(x) + 0.5 * xtol;
 		double next = x - fx / df; // (NaN or infinite for df = 0 or non-finite: rejected below)
 		const bool newton = next > lo && next < hi && 2.0 * std::fabs(next - x) <= before;
