@@ -68,6 +68,34 @@ TEST_CASE("powers: RootGuess is within 6.2 % of the k-th root for 0 < x <= 1, an
 	}
 }
 
+#if defined(B2A_SSE2_PAIRS)
+TEST_CASE("powers: CubeRootPair is CubeRoot bit for bit in both lanes, at every table cell's ends and middle and at random")
+{
+	// Every residue of the exponent mod 3 (three exponents in a row), every cell of the mantissa
+	// (its first and last double and its middle), lanes swapped, and random draws over the range.
+	auto same = [](double x0, double x1) {
+		double out[2];
+		_mm_storeu_pd(out, CubeRootPair(_mm_set_pd(x1, x0)));
+		CAPTURE(x0);
+		CAPTURE(x1);
+		REQUIRE(out[0] == CubeRoot(x0));
+		REQUIRE(out[1] == CubeRoot(x1));
+	};
+	for (int e : {-900, -3, -2, -1, 0, 1, 2, 3, 900})
+		for (int i = 0; i < kCubeRootCells; ++i)
+		{
+			const double first = std::ldexp(1.0 + double(i) / kCubeRootCells, e);
+			const double last = std::nextafter(std::ldexp(1.0 + double(i + 1) / kCubeRootCells, e), 0.0);
+			const double middle = std::ldexp(1.0 + (i + 0.5) / kCubeRootCells, e);
+			same(first, last);
+			same(middle, first);
+		}
+	Random rng(12);
+	for (int k = 0; k < 100000; ++k)
+		same(std::exp(rng.Uniform(-667.0, 667.0)), std::exp(rng.Uniform(-667.0, 667.0)));
+}
+#endif
+
 TEST_CASE("powers: CubeRoot keeps zero with its sign and hands the ends of the range, infinities and NaN to std::cbrt")
 {
 	CHECK(CubeRoot(0.0) == 0.0);
