@@ -68,6 +68,29 @@ TEST_CASE("powers: RootGuess is within 6.2 % of the k-th root for 0 < x <= 1, an
 	}
 }
 
+TEST_CASE("powers: CubeRoot's table holds cube roots of 17 bits whose cubes are exact, within 4e-3 of every mantissa of their cell")
+{
+	// What CubeRoot's error bound rests on: m − c³ exact and |d| = |m/c³ − 1| ≤ 4e-3, where the
+	// series' first left-out term, 0.0191·d⁷, is below 3e-19.
+	double widest = 0.0;
+	for (int r = 0; r < 3; ++r)
+		for (int i = 0; i < kCubeRootCells; ++i)
+		{
+			const CubeRootCell& cell = kCubeRootTable.cell[r * kCubeRootCells + i];
+			CAPTURE(r);
+			CAPTURE(i);
+			REQUIRE(cell.c * 65536.0 == std::floor(cell.c * 65536.0)); // 17 significant bits (1 ≤ c < 2)
+			REQUIRE((long double)(cell.c * cell.c * cell.c) == (long double)cell.c * cell.c * cell.c);
+			REQUIRE(std::fabs((long double)cell.inv * cell.c * cell.c * cell.c - 1.0L) <= 1.2e-16L);
+			const double lo = std::ldexp(1.0 + double(i) / kCubeRootCells, r), hi = std::ldexp(1.0 + double(i + 1) / kCubeRootCells, r);
+			for (double m : {lo, hi})
+				widest = std::max(widest, std::fabs(double((long double)m / ((long double)cell.c * cell.c * cell.c) - 1.0L)));
+		}
+	CAPTURE(widest);
+	CHECK(widest <= 4e-3);
+	CHECK(widest >= 3.5e-3); // (7 bits of cells: 1/256 of the mantissa either side, give or take c's rounding)
+}
+
 #if defined(B2A_SSE2_PAIRS)
 TEST_CASE("powers: CubeRootPair is CubeRoot bit for bit in both lanes, at every table cell's ends and middle and at random")
 {

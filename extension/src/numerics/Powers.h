@@ -45,18 +45,22 @@ inline double CubeRootGuess(double x)
 }
 
 /// CubeRoot's table: for each residue r = 0, 1, 2 of the binary exponent mod 3 and each of the
-/// kCubeRootCells cells of the mantissa m = 2^r·(1 + f) ∈ [1, 8), c ≈ ∛(the cell's middle) with
-/// 17 significant bits, so that c³ (51 bits) is exact in a double, and inv = 1/c³ rounded.
+/// kCubeRootCells cells of the mantissa m = 2^r·(1 + f) ∈ [1, 8) (the top kCubeRootCellBits bits
+/// of the fraction f), c ≈ ∛(the cell's middle) with 17 significant bits, so that c³ (51 bits)
+/// is exact in a double, and inv = 1/c³ rounded.
 constexpr int kCubeRootCellBits = 7, kCubeRootCells = 1 << kCubeRootCellBits;
+/// One cell of CubeRoot's table.
 struct CubeRootCell
 {
 	double c;   ///< ∛ of the cell's middle to 17 bits
 	double inv; ///< 1/c³, rounded
 };
+/// CubeRoot's table: cell r·kCubeRootCells + i for residue r and fraction cell i (6 KB).
 struct CubeRootTable
 {
 	CubeRootCell cell[3 * kCubeRootCells]; ///< cell r·kCubeRootCells + i
 };
+/// Builds CubeRoot's table at compile time.
 constexpr CubeRootTable MakeCubeRootTable()
 {
 	CubeRootTable t{};
@@ -64,7 +68,9 @@ constexpr CubeRootTable MakeCubeRootTable()
 		for (int i = 0; i < kCubeRootCells; ++i)
 		{
 			const double m = double(1 << r) * (1.0 + (i + 0.5) / kCubeRootCells);
-			double y = 1.5; // Newton on y³ = m from above the root (m ≤ 8): monotone, 60 steps is plenty
+			// Newton on y³ = m: after the first step at or above the root (the mean of y, y and
+			// m/y² is at least their geometric mean) and then falling onto it; 60 steps is plenty.
+			double y = 1.5;
 			for (int k = 0; k < 60; ++k)
 				y = (2.0 * y + m / (y * y)) / 3.0;
 			const double c = double(static_cast<long long>(y * 65536.0 + 0.5)) / 65536.0; // 1 ≤ c < 2: 17 bits
@@ -72,6 +78,7 @@ constexpr CubeRootTable MakeCubeRootTable()
 		}
 	return t;
 }
+/// CubeRoot's table, built by the compiler.
 inline constexpr CubeRootTable kCubeRootTable = MakeCubeRootTable();
 
 /// The real cube root, within 0.51 ulp of the exact one (measured 0.503 over 2e6 draws: all but
