@@ -153,45 +153,41 @@ bool CentreLineStart(const PairInA& p, double& t)
 }
 
 // A start for the point of the superellipse with terms t (integer exponents ≥ 3, in the pair's
-// units) whose normal is along d: SupportNear(d, 0) with RootGuess's roots (SupportNear's
-// CubeRoot for n = 4, pow for n = 8, exp and log for n ≠ m were 5 % of a cold contact). With
-// e = (a·dx, b·dy) and κ = max(|ex|/n, |ey|/m), the point of the bounding box's side where the level curve's
-// normal is along d is X = (|ex|/(nκ))^{1/(n−1)}, Y = (|ey|/(mκ))^{1/(m−1)} (Lagrange's
-// condition with one of X, Y equal to 1). For n = m it is scaled onto the surface, f^{1/n}
-// (scaling keeps the normal then): the support point itself.
-Vec2 StartSupport(const SuperellipseTerms& t, Vec2 d)
+// units; a and b its semi-axes there) whose normal is along d: SupportNear(d, 0) with RootGuess's
+// roots (SupportNear's CubeRoot for n = 4, pow for n = 8, exp and log for n ≠ m were 5 % of a
+// cold contact). With e = (a·dx, b·dy) and κ = max(|ex|/n, |ey|/m), the point of the bounding
+// box's side where the level curve's normal is along d is X = (|ex|/(nκ))^{1/(n−1)},
+// Y = (|ey|/(mκ))^{1/(m−1)} (Lagrange's condition with one of X, Y equal to 1). |ex|/n =
+// |dx|/gradX, so the ratio of the two is |dy|·gradX/(|dx|·gradY): one division. The point lies on
+// a level f ∈ [1, 2] outside the surface, also for n = m, where scaling it onto the surface
+// (f^{−1/n}: the support point itself) cost a chain of roots and a division, and gave a worse
+// start (see BoxStart).
+Vec2 StartSupport(const SuperellipseTerms& t, double a, double b, Vec2 d)
 {
-	const double a = 1.0 / t.invA, b = 1.0 / t.invB;
-	const double rx = std::fabs(a * d.x) / t.n, ry = std::fabs(b * d.y) / t.m;
+	const double px = std::fabs(d.x) * t.gradY, py = std::fabs(d.y) * t.gradX;
 	double X = 1.0, Y = 1.0;
-	if (rx >= ry)
-		Y = RootGuess(ry / rx, t.mInt - 1);
+	if (px >= py)
+		Y = RootGuess(py / px, t.mInt - 1);
 	else
-		X = RootGuess(rx / ry, t.nInt - 1);
-	if (t.nInt == t.mInt)
-	{
-		const double inv = 1.0 / RootOf(PowAbs(X, t.n, t.nInt) + PowAbs(Y, t.m, t.mInt), t.n);
-		X *= inv;
-		Y *= inv;
-	}
+		X = RootGuess(px / py, t.nInt - 1);
 	return Vec2(a * std::copysign(X, d.x), b * std::copysign(Y, d.y));
 }
 
-// The cold start of blocky pairs (Blocky: every exponent at least 3): the contact of the
-// bounding boxes. Scaled about their centres by s, two boxes touch where s first reaches the
-// largest, over the four face normals u of the two boxes, of |c·u| / (hA(u) + hB(u)), h the box's
-// half-width along u (the separating-axis test, solved for the scale). If u is a face normal of
-// A, B's point that touches it is B's support point against u (SuperellipseShape::Support in
-// closed form for n = m; for n ≠ m the point of B's box side with its normal along u, below), scaled by s
-// about B's centre, and the other way round for a face of B. Blocky superellipses are nearly
-// their boxes, and a corner meeting a face is the common contact: from there Newton needs 3.9
-// iterations for n = 8 over 600 random poses where the centre-line start needs 5.4 (n = 4: 4.2
-// against 4.9, n = 12: 3.7 against 5.7). Mixed exponents gain too (800 poses like the pair
-// bench's, cold, to the end of the contact: n = 4, m = 8 pairs 5.42 -> 4.73 iterations and 13 %
-// fewer instructions; n = 4 against n = 8 5.21 -> 4.79 and 25 %; n = 3 against n = 8 5.26 ->
-// 5.31 iterations but 21 % fewer instructions, the centre line's own root search being dearer
-// than the box's supports). For rounder shapes, an ellipse among them, the centre line is the
-// better start (n = 4 against an ellipse: 4.8 against 4.5 iterations).
+// The cold start of blocky pairs (Blocky: every exponent at least 3): the contact of the bounding
+// boxes. Scaled about their centres by s, two boxes touch where s first reaches the largest, over
+// the four face normals u of the two boxes, of |c·u| / (hA(u) + hB(u)), h the box's half-width
+// along u (the separating-axis test, solved for the scale). If u is a face normal of A, B's point
+// that touches it is B's support point against u (SuperellipseShape::Support in closed form for
+// n = m; for n ≠ m, and for integer exponents, the point of B's box side with its normal along u,
+// below), scaled by s about B's centre, and the other way round for a face of B. Blocky
+// superellipses are nearly their boxes, and a corner meeting a face is the common contact: from
+// there Newton needs 3.9 iterations for n = 8 over 600 random poses where the centre-line start
+// needs 5.4 (n = 4: 4.2 against 4.9, n = 12: 3.7 against 5.7). Mixed exponents gain too (800 poses
+// like the pair bench's, cold, to the end of the contact: n = 4, m = 8 pairs 5.42 -> 4.73
+// iterations and 13 % fewer instructions; n = 4 against n = 8 5.21 -> 4.79 and 25 %; n = 3 against
+// n = 8 5.26 -> 5.31 iterations but 21 % fewer instructions, the centre line's own root search
+// being dearer than the box's supports). For rounder shapes, an ellipse among them, the centre line
+// is the better start (n = 4 against an ellipse: 4.8 against 4.5 iterations).
 bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double size, const PairInA& p, Vec2& xi)
 {
 	const double aA = 1.0 / p.a.invA, bA = 1.0 / p.a.invB, aB = 1.0 / p.b.invA, bB = 1.0 / p.b.invB;
@@ -212,15 +208,22 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 	}
 	const Vec2 u = Dot(p.c, axes[face]) < 0.0 ? -axes[face] : axes[face]; // from A towards B
 	const double k = scale / size; // the support points are in body units, ξ in the pair's
-	// For n ≠ m, not the support point itself but SupportNear's start for it: the point on the
-	// side of the bounding box where the level curve's normal is along the direction, no Newton
-	// step. As a start it is at least as good and cheaper (800 bench-like cold n = 4, m = 8
-	// contacts: 4.52 iterations and 5,110 instructions each, against 4.73 and 6,030 with the
-	// exact support, and 4.73 and 5,740 with three steps towards it). Integer exponents take
-	// StartSupport, SupportNear(d, 0) with guessed roots: n = 4 and (4, 8) cold contacts 4 %
-	// cheaper, n = 8 1.5 %, at the same Newton iterations (the finish's 2.78 -> 2.91 for n = 8).
+	// For n ≠ m, not the support point itself but SupportNear's start for it: the point on the side
+	// of the bounding box where the level curve's normal is along the direction, no Newton step. As
+	// a start it is at least as good and cheaper (800 bench-like cold n = 4, m = 8 contacts: 4.52
+	// iterations and 5,110 instructions each, against 4.73 and 6,030 with the exact support, and
+	// 4.73 and 5,740 with three steps towards it). Integer exponents take StartSupport,
+	// SupportNear(d, 0) with guessed roots: n = 4 and (4, 8) cold contacts 4 % cheaper, n = 8
+	// 1.5 %, at the same Newton iterations (the finish's 2.78 -> 2.91 for n = 8). It takes the box
+	// side's point for n = m too. That point errs the right way: the boxes touch at the scale s,
+	// the particles inside them only at a common level above s, so the common point lies beyond B's
+	// surface scaled by s, where the box side's point is. Scaling it onto the surface (the support
+	// point) cost a chain of two or three square roots and a division, and Newton needed more steps
+	// from there: cold n = 4 4.24 -> 4.12 iterations and 327 -> 294 ns a contact (120 bench-like
+	// poses), n = 8 4.17 -> 4.09 and 344 -> 309 ns (with StartSupport's divisions folded into one,
+	// which gave the (4, 8) pairs 355 -> 347 ns).
 	if (p.integer)
-		xi = face < 2 ? p.c + scale * Rotate(p.r, StartSupport(p.b, InvRotate(p.r, -u))) : scale * StartSupport(p.a, u);
+		xi = face < 2 ? p.c + scale * Rotate(p.r, StartSupport(p.b, aB, bB, InvRotate(p.r, -u))) : scale * StartSupport(p.a, aA, bA, u);
 	else
 		xi = face < 2 ? p.c + k * Rotate(p.r, b.SupportNear(InvRotate(p.r, -u), 0)) : k * a.SupportNear(u, 0);
 	return scale > 0.0 && IsFinite(xi);
