@@ -90,9 +90,11 @@ inline void Evaluate(const PairInA& p, Vec2 xi, Gauge& ga, Gauge& gb)
 	ToGauge(p, db.f, grad.x, grad.y, c * c * hx + s * s * hy, c * s * (hx - hy), s * s * hx + c * c * hy, gb);
 }
 
-// The residual (∇ψA + μ∇ψB, ψA − ψB) and its size relative to the size of its terms (the
-// generic solver's measure, so that both accept the same rounding floor). A NaN anywhere in the
-// gauges' values or gradients makes it NaN.
+// The residual (∇ψA + μ∇ψB, ψA − ψB) and the square of its size relative to the size of its
+// terms (the generic solver's measure, squared, so that both accept the same rounding floor: the
+// thresholds below are the generic solver's, squared). The square root was on every evaluation
+// for nothing but these comparisons (cold n = 4 to 8 contacts 1.5 to 2.5 % cheaper without it).
+// A NaN anywhere in the gauges' values or gradients makes it NaN.
 inline double Residual(const Gauge& ga, const Gauge& gb, double mu, double r[3])
 {
 	r[0] = ga.gx + mu * gb.gx;
@@ -100,7 +102,7 @@ inline double Residual(const Gauge& ga, const Gauge& gb, double mu, double r[3])
 	r[2] = ga.psi - gb.psi;
 	const double gradScale = ga.gx * ga.gx + ga.gy * ga.gy + mu * mu * (gb.gx * gb.gx + gb.gy * gb.gy) + 1e-300;
 	const double levelScale = ga.psi * ga.psi + gb.psi * gb.psi + 1e-300;
-	return std::sqrt((r[0] * r[0] + r[1] * r[1]) / gradScale + r[2] * r[2] / levelScale);
+	return (r[0] * r[0] + r[1] * r[1]) / gradScale + r[2] * r[2] / levelScale;
 }
 
 // The cold start: the point of the centre line ξ = t·c where both levels agree (the generic
@@ -301,13 +303,13 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		double mu;
 		Gauge A, B;
 		double r[3];
-		double relative; // NaN where anything evaluated was not finite
+		double relativeSquared; // NaN where anything evaluated was not finite
 	};
 	auto evaluate = [&](Point& q, Vec2 at_xi, double at_mu) {
 		q.xi = at_xi;
 		q.mu = at_mu;
 		Evaluate(p, at_xi, q.A, q.B);
-		q.relative = Residual(q.A, q.B, at_mu, q.r);
+		q.relativeSquared = Residual(q.A, q.B, at_mu, q.r);
 	};
 	Point points[2];
 	Point* current = &points[0];
@@ -321,7 +323,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		const double ga = std::sqrt(current->A.gx * current->A.gx + current->A.gy * current->A.gy);
 		const double gb = std::sqrt(current->B.gx * current->B.gx + current->B.gy * current->B.gy);
 		current->mu = ga > 0.0 && gb > 0.0 && std::isfinite(ga / gb) ? ga / gb : 1.0;
-		current->relative = Residual(current->A, current->B, current->mu, current->r);
+		current->relativeSquared = Residual(current->A, current->B, current->mu, current->r);
 	}
 	else
 		evaluate(*current, xi, mu);
@@ -332,7 +334,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	{
 		Point& q = *current;
 		result.iterations = it;
-		if (!std::isfinite(q.relative))
+		if (!std::isfinite(q.relativeSquared))
 		{
 			result.failure = "non-finite level value or derivative during Newton iteration";
 			return result;
@@ -350,11 +352,11 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 			if (muLs > 0.0 && std::isfinite(muLs) && muLs != q.mu)
 			{
 				double r[3];
-				const double relative = Residual(q.A, q.B, muLs, r);
-				if (relative < q.relative)
+				const double relativeSquared = Residual(q.A, q.B, muLs, r);
+				if (relativeSquared < q.relativeSquared)
 				{
 					q.mu = muLs;
-					q.relative = relative;
+					q.relativeSquared = relativeSquared;
 					std::copy(r, r + 3, q.r);
 				}
 			}
@@ -366,7 +368,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		const Solve3Result step = SolveBordered(hxx, hxy, hyy, q.B.gx, q.B.gy, q.A.gx - q.B.gx, q.A.gy - q.B.gy, minusR);
 		if (!(step.rcond > 1e-14))
 		{
-			if (q.relative < 1e-11)
+			if (q.relativeSquared < 1e-11 * 1e-11)
 				break; // solved: the Jacobian is singular only at the answer's rounding level
 			result.failure = "singular or ill-conditioned Jacobian";
 			return result;
@@ -388,7 +390,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 			return now <= 0.1 * options.stepTolerance ||
 			       (before > 0.0 && now < 0.25 * before && 10.0 * (now / (before * before)) * now * now <= options.stepTolerance);
 		};
-		if (q.relative <= 1e-6 && previousXi > 0.0 && previousXi <= 1e-2 && settled(stepXi, previousXi) &&
+		if (q.relativeSquared <= 1e-6 * 1e-6 && previousXi > 0.0 && previousXi <= 1e-2 && settled(stepXi, previousXi) &&
 		    settled(stepMu, previousMu))
 		{
 			const double dx = delta[0], dy = delta[1];
@@ -439,7 +441,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		const double w3 = 1.0 / (q.A.psi * q.A.psi + q.B.psi * q.B.psi + 1e-300);
 		auto merit = [&](const Point& t) { return w12 * (t.r[0] * t.r[0] + t.r[1] * t.r[1]) + w3 * t.r[2] * t.r[2]; };
 		const double merit0 = merit(q);
-		const int halvings = q.relative < 1e-9 ? 3 : 40;
+		const int halvings = q.relativeSquared < 1e-9 * 1e-9 ? 3 : 40;
 		double alpha = 1.0;
 		bool accepted = false;
 		for (int k = 0; k < halvings; ++k, alpha *= 0.5)
@@ -453,7 +455,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		}
 		if (!accepted)
 		{
-			if (q.relative < 1e-9)
+			if (q.relativeSquared < 1e-9 * 1e-9)
 				break; // rounding floor
 			result.failure = "line search stalled (no step lowers the residual)";
 			return result;
@@ -461,7 +463,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		const double moved = alpha * limit * stepXi;
 		std::swap(current, trial);
 		const bool full = limit == 1.0 && alpha == 1.0;
-		if ((full && moved <= options.stepTolerance) || current->relative < 1e-15)
+		if ((full && moved <= options.stepTolerance) || current->relativeSquared < 1e-15 * 1e-15)
 			break;
 		previousXi = full ? stepXi : 0.0;
 		previousMu = full ? stepMu : 0.0;
