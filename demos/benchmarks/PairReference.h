@@ -168,7 +168,7 @@ inline V RefRadial(const RefPosed& s, V X)
 
 /// The contact built from a level point, as ContactFromLevel documents it.
 inline RefContact RefContactFromPoint(const RefPosed& A, const RefPosed& B, V X, LD level, bool touching,
-                                      bool pointOnB, bool convexA, bool convexB)
+                                      bool pointOnB, bool convexA, bool convexB, const V* given = nullptr)
 {
 	RefContact c;
 	c.point = X;
@@ -177,7 +177,9 @@ inline RefContact RefContactFromPoint(const RefPosed& A, const RefPosed& B, V X,
 	const V na = RefUnitNormal(A, X), nb = RefUnitNormal(B, X);
 	const bool hasA = test::ref::Len(na) > 0.0L, hasB = test::ref::Len(nb) > 0.0L;
 	V n{};
-	if (hasA && hasB)
+	if (given)
+		n = *given;
+	else if (hasA && hasB)
 		n = test::ref::Dot(na, nb) < 0.0L ? test::ref::Unit(na - nb) : (pointOnB ? -1.0L * nb : na);
 	else if (hasA)
 		n = na;
@@ -206,6 +208,9 @@ inline RefContact CommonContactRef(const RefPosed& A, const RefPosed& B)
 		                                          test::ref::QuadOf(B.shape.a, B.shape.b, B.pose));
 		X = pw.point;
 		C = pw.level;
+		// The normal from the shapes' matrices (PwNormal): the gradients at X turn with X's
+		// rounding by up to (a/b)² where the point sits near both centres of crossing needles.
+		return RefContactFromPoint(A, B, X, C, C <= 1.0L, false, true, true, &pw.normal);
 	}
 	else
 	{

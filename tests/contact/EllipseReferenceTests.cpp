@@ -526,3 +526,41 @@ TEST_CASE("ellipses: the Perram-Wertheim solver is exact at any size, from 1e-15
 	CHECK(solves == 300);
 	CHECK(worst <= 1e-12);
 }
+
+TEST_CASE("ellipses: 1000:1 needles crossing near both centres: the contact and the reference's normal match a 60-digit solution")
+{
+	// A cold pose of b2a_bench_pairs (ellipse_a1000, seed 1) whose long-double reference was once
+	// wrong: the needles cross nearly at right angles, their centres 4e-5 apart (common level
+	// 5.5e-12). There the gradients at the common point turn with the point's rounding by up to
+	// (a/b)², so the bench's reference, the mean of the two unit normals there, was 5.5e-11 off,
+	// and the point where the normal line leaves B, 3 units on at 0.005 rad to B's axis, 1.7e-9
+	// of the size off; the library's answer is within 1e-15 (PwNormal explains the fix). The values: Newton on (∇F_A + μ∇F_B, F_A − F_B) in 60-digit
+	// arithmetic (mpmath) from these exact doubles, the points the line's crossings as
+	// ContactFromLevel takes them.
+	auto rot = [](double c, double s) {
+		Rot q;
+		q.c = c;
+		q.s = s;
+		return q;
+	};
+	const Pose pa(Vec2(-0x1.629b7678535ap-4, 0x1.cddce69245f2p-3), rot(0x1.1ef6617800b28p-2, 0x1.eb7c10b91080ap-1));
+	const Pose pb(Vec2(-0x1.62c6fc1826639p-4, 0x1.cdd8e77df6adcp-3), rot(0x1.ec47cc54fb893p-1, -0x1.1973f77d5b06p-2));
+	const auto a = MakeEllipse(20.0, 0.02), b = MakeEllipse(16.0, 0.016);
+	const V normal{-0.9600524047640900086885497L, 0.2798202639314885000319824L};
+	const V pointA{-0.1057803429717933890034608L, 0.2310974098390590409796342L};
+	const V pointB{2.832419798180406214131969L, -0.625280778373253628758384L};
+	const LD level = 5.541307750332651260251592e-12L;
+	const double size = 18.0; // the mean bounding radius
+
+	const ContactResult c = ComputeContact(*a, pa, *b, pb);
+	REQUIRE(c.Ok());
+	CHECK(LevelErr(c.level, level) <= 1e-10);
+	CHECK(double(ref::Dist(c.normal, normal)) <= 1e-14);
+	CHECK(double(ref::Dist(c.pointA, pointA)) <= 1e-13 * size);
+	CHECK(double(ref::Dist(c.pointB, pointB)) <= 1e-13 * size);
+
+	// The reference's normal from the shapes' matrices (PwNormal), and its points from it.
+	const ref::PwResult want = ref::PerramWertheim(ref::QuadOf(LD(20.0), LD(0.02), ref::Of(pa)), ref::QuadOf(LD(16.0), LD(0.016), ref::Of(pb)));
+	CHECK(double(ref::Dist(ref::ToVec(want.normal), normal)) <= 1e-14);
+	CHECK(LevelErr(double(want.level), level) <= 1e-10);
+}
