@@ -537,14 +537,8 @@ TEST_CASE("ellipses: 1000:1 needles crossing near both centres: the contact and 
 	// of the size off; the library's answer is within 1e-15 (PwNormal explains the fix). The values: Newton on (∇F_A + μ∇F_B, F_A − F_B) in 60-digit
 	// arithmetic (mpmath) from these exact doubles, the points the line's crossings as
 	// ContactFromLevel takes them.
-	auto rot = [](double c, double s) {
-		Rot q;
-		q.c = c;
-		q.s = s;
-		return q;
-	};
-	const Pose pa(Vec2(-0x1.629b7678535ap-4, 0x1.cddce69245f2p-3), rot(0x1.1ef6617800b28p-2, 0x1.eb7c10b91080ap-1));
-	const Pose pb(Vec2(-0x1.62c6fc1826639p-4, 0x1.cdd8e77df6adcp-3), rot(0x1.ec47cc54fb893p-1, -0x1.1973f77d5b06p-2));
+	const Pose pa = PoseOf(Vec2(-0x1.629b7678535ap-4, 0x1.cddce69245f2p-3), 0x1.1ef6617800b28p-2, 0x1.eb7c10b91080ap-1);
+	const Pose pb = PoseOf(Vec2(-0x1.62c6fc1826639p-4, 0x1.cdd8e77df6adcp-3), 0x1.ec47cc54fb893p-1, -0x1.1973f77d5b06p-2);
 	const auto a = MakeEllipse(20.0, 0.02), b = MakeEllipse(16.0, 0.016);
 	const V normal{-0.9600524047640900086885497L, 0.2798202639314885000319824L};
 	const V pointA{-0.1057803429717933890034608L, 0.2310974098390590409796342L};
