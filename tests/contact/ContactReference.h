@@ -152,11 +152,23 @@ struct RefShape
 		return {n / a * sx * PowL(std::fabs(X), n - 1.0L), m / b * sy * PowL(std::fabs(Y), m - 1.0L)};
 	}
 
-	/// The superellipse's ∇²λ(x), diagonal in the body frame: n(n − 1)|X|^{n−2}/a², m(m − 1)|Y|^{m−2}/b²
-	/// (n, m ≥ 2; used only to polish a common point by Newton's method).
-	V HessianDiagonal(V x) const
+	/// ∇²λ(x) in the body frame (xx, xy, yy), to polish a point by Newton's method: for a
+	/// superellipse n(n − 1)|X|^{n−2}/a², 0, m(m − 1)|Y|^{m−2}/b² (n, m ≥ 2); for the heart
+	/// 2 + (2/9)|x|^{−4/3}y, −(2/3)sgn(x)|x|^{−1/3}, 2, infinite on its axis x = 0.
+	void Hessian(V x, LD& xx, LD& xy, LD& yy) const
 	{
-		return {n * (n - 1.0L) / (a * a) * PowL(std::fabs(x.x / a), n - 2.0L), m * (m - 1.0L) / (b * b) * PowL(std::fabs(x.y / b), m - 2.0L)};
+		if (kind == Kind::heart)
+		{
+			const LD ax = std::fabs(x.x), c = std::cbrt(ax);
+			const LD sg = x.x > 0 ? 1.0L : (x.x < 0 ? -1.0L : 0.0L);
+			xx = 2.0L + (2.0L / 9.0L) * x.y / (c * ax);
+			xy = -(2.0L / 3.0L) * sg / c;
+			yy = 2.0L;
+			return;
+		}
+		xx = n * (n - 1.0L) / (a * a) * PowL(std::fabs(x.x / a), n - 2.0L);
+		xy = 0.0L;
+		yy = m * (m - 1.0L) / (b * b) * PowL(std::fabs(x.y / b), m - 2.0L);
 	}
 
 	/// Body point of the level-L set at curve parameter s (period 4, counter-clockwise, s = 0 on
@@ -262,6 +274,83 @@ std::pair<LD, LD> Minimise1D(F&& f, LD lo, LD hi)
 }
 
 /// Result of a surface minimum.
+/// A Lagrange point polished by Newton's method in long double: the common point, where
+/// ∇λA + μ∇λB = 0 and λA = λB (`common`), or the smallest λA on B's level-L set, where
+/// ∇λA + μ∇λB = 0 and λB = L. A minimum found by comparing values (CommonLevelRef's and
+/// SurfaceMin's) fixes its point only to the square root of their rounding, ~3e-10 of the size:
+/// at a 4,8 superellipse pose of b2a_bench_pairs that put the common reference's contact points
+/// 1.1e-9 of the size off, where a 60-digit solution found the library's within 1e-15. Newton's
+/// steps square that error away. Each is kept only while it lowers the residual, at most 8 are
+/// taken, and X is returned unchanged where they would move it by more than 1e-6 of its distance
+/// from B's centre (not the local root), or where a shape has no Hessian there (a superellipse
+/// exponent below 2, the heart's axis).
+inline V PolishLagrange(const RefShape& A, const RefPose& pa, const RefShape& B, const RefPose& pb, V X, bool common, LD L = 1.0L)
+{
+	auto smooth = [](const RefShape& S) { return S.kind == RefShape::Kind::heart || (S.n >= 2.0L && S.m >= 2.0L); };
+	if (!smooth(A) || !smooth(B))
+		return X;
+	struct Side
+	{
+		LD level;
+		V grad;
+		LD hxx, hxy, hyy;
+	};
+	auto side = [](const RefShape& S, const RefPose& p, V at) {
+		const V x = ToBodyL(p, at);
+		LD bxx, bxy, byy;
+		S.Hessian(x, bxx, bxy, byy);
+		// R·H·Rᵀ with R = [[c, −s], [s, c]].
+		const LD c = p.c, s = p.s;
+		const LD xx = c * c * bxx - 2.0L * c * s * bxy + s * s * byy;
+		const LD xy = c * s * (bxx - byy) + (c * c - s * s) * bxy;
+		const LD yy = s * s * bxx + 2.0L * c * s * bxy + c * c * byy;
+		return Side{S.Level(x), RotateL(p, S.Gradient(x)), xx, xy, yy};
+	};
+	const V start = X;
+	Side sa = side(A, pa, X), sb = side(B, pb, X);
+	const LD gb2 = Dot(sb.grad, sb.grad);
+	if (!(gb2 > 0.0L))
+		return X;
+	LD mu = -Dot(sa.grad, sb.grad) / gb2;
+	if (!(mu > 0.0L))
+		return X;
+	auto constraint = [&](const Side& p, const Side& q) { return common ? p.level - q.level : q.level - L; };
+	auto residual = [&](const Side& p, const Side& q, LD m) {
+		const LD r0 = p.grad.x + m * q.grad.x, r1 = p.grad.y + m * q.grad.y, r2 = constraint(p, q);
+		return r0 * r0 + r1 * r1 + r2 * r2;
+	};
+	auto det3 = [](LD a, LD b, LD c, LD d, LD e, LD f, LD g, LD h, LD i) {
+		return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
+	};
+	LD res = residual(sa, sb, mu);
+	for (int it = 0; it < 8 && res > 0.0L; ++it)
+	{
+		// [[HA + μHB, ∇λB], [cᵀ, 0]]·(δx, δμ) = −(∇λA + μ∇λB, constraint), c its gradient, by
+		// Cramer's rule.
+		const LD h11 = sa.hxx + mu * sb.hxx, h12 = sa.hxy + mu * sb.hxy, h22 = sa.hyy + mu * sb.hyy;
+		const LD g1 = sb.grad.x, g2 = sb.grad.y;
+		const LD d1 = common ? sa.grad.x - sb.grad.x : sb.grad.x, d2 = common ? sa.grad.y - sb.grad.y : sb.grad.y;
+		const LD r0 = -(sa.grad.x + mu * sb.grad.x), r1 = -(sa.grad.y + mu * sb.grad.y), r2 = -constraint(sa, sb);
+		const LD det = det3(h11, h12, g1, h12, h22, g2, d1, d2, 0.0L);
+		if (!(std::fabs(det) > 0.0L) || !std::isfinite(det))
+			break;
+		const LD dx = det3(r0, h12, g1, r1, h22, g2, r2, d2, 0.0L) / det;
+		const LD dy = det3(h11, r0, g1, h12, r1, g2, d1, r2, 0.0L) / det;
+		const LD dm = det3(h11, h12, r0, h12, h22, r1, d1, d2, r2) / det;
+		const V next{X.x + dx, X.y + dy};
+		const Side na = side(A, pa, next), nb = side(B, pb, next);
+		const LD nres = residual(na, nb, mu + dm);
+		if (!(nres < res) || !(mu + dm > 0.0L))
+			break;
+		X = next;
+		mu += dm;
+		sa = na;
+		sb = nb;
+		res = nres;
+	}
+	return Len(X - start) <= 1e-6L * Len(start - pb.p) ? X : start;
+}
+
 struct SurfaceMinResult
 {
 	LD value = 0.0L; ///< smallest level of A on B's level-L surface
@@ -322,6 +411,18 @@ inline SurfaceMinResult SurfaceMin(const RefShape& A, const RefPose& pa, const R
 	out.value = polished[0].first;
 	out.s = polished[0].second;
 	out.point = ToWorldL(pb, B.Surface(out.s, L));
+	// Minimise1D fixes s to the square root of the values' rounding; the point is polished on
+	// the Lagrange system (s, which only locates it on the curve, is left as found). Where the
+	// minimum is a kink (the heart's |x|^{2/3} valley along its axis) there is no Lagrange point,
+	// and Newton's steps end beside it on a higher value: the polish is kept only where the
+	// value is as low, to the rounding of the values (1e-14 of it).
+	const V exact = PolishLagrange(A, pa, B, pb, out.point, false, L);
+	const LD exactValue = A.Level(ToBodyL(pa, exact));
+	if ((exact.x != out.point.x || exact.y != out.point.y) && exactValue <= out.value + 1e-14L * std::fabs(out.value))
+	{
+		out.point = exact;
+		out.value = exactValue;
+	}
 	// The next local minimum that is a different place on the curve (not the same one found twice).
 	for (size_t i = 1; i < polished.size(); ++i)
 	{
@@ -342,71 +443,6 @@ struct CommonLevelResult
 	LD level = 0.0L; ///< C
 	V point;         ///< the common point (on B's level-C surface)
 };
-
-/// The common point polished by Newton's method on (∇λA + μ∇λB, λA − λB) in long double, for two
-/// superellipses with exponents ≥ 2 (X unchanged otherwise). The point that CommonLevelRef's
-/// minimisation of λA over B's level set gives is fixed only to the square root of the rounding
-/// of the values it compares, ~3e-10 of the size: at a 4,8 superellipse pose of b2a_bench_pairs
-/// that put its contact points 1.1e-9 of the size off, where a 60-digit solution found the
-/// library's within 1e-15. Newton's steps square that error away; each is kept only while it
-/// lowers the residual, and at most 8 are taken.
-inline V PolishCommonPoint(const RefShape& A, const RefPose& pa, const RefShape& B, const RefPose& pb, V X)
-{
-	using Kind = RefShape::Kind;
-	if (A.kind != Kind::superellipse || B.kind != Kind::superellipse || A.n < 2.0L || A.m < 2.0L || B.n < 2.0L || B.m < 2.0L)
-		return X;
-	struct Side
-	{
-		LD level;
-		V grad;
-		LD hxx, hxy, hyy;
-	};
-	auto side = [](const RefShape& S, const RefPose& p, V at) {
-		const V x = ToBodyL(p, at);
-		const V g = S.Gradient(x), d = S.HessianDiagonal(x);
-		const LD c = p.c, s = p.s;
-		return Side{S.Level(x), RotateL(p, g), c * c * d.x + s * s * d.y, c * s * (d.x - d.y), s * s * d.x + c * c * d.y};
-	};
-	Side sa = side(A, pa, X), sb = side(B, pb, X);
-	const LD gb2 = Dot(sb.grad, sb.grad);
-	if (!(gb2 > 0.0L))
-		return X;
-	LD mu = -Dot(sa.grad, sb.grad) / gb2;
-	if (!(mu > 0.0L))
-		return X;
-	auto residual = [](const Side& p, const Side& q, LD mu) {
-		const LD r0 = p.grad.x + mu * q.grad.x, r1 = p.grad.y + mu * q.grad.y, r2 = p.level - q.level;
-		return r0 * r0 + r1 * r1 + r2 * r2;
-	};
-	LD res = residual(sa, sb, mu);
-	for (int it = 0; it < 8 && res > 0.0L; ++it)
-	{
-		// [[HA + μHB, ∇λB], [(∇λA − ∇λB)ᵀ, 0]]·(δx, δμ) = −(∇λA + μ∇λB, λA − λB), by Cramer's rule.
-		const LD h11 = sa.hxx + mu * sb.hxx, h12 = sa.hxy + mu * sb.hxy, h22 = sa.hyy + mu * sb.hyy;
-		const LD g1 = sb.grad.x, g2 = sb.grad.y, d1 = sa.grad.x - sb.grad.x, d2 = sa.grad.y - sb.grad.y;
-		const LD r0 = -(sa.grad.x + mu * sb.grad.x), r1 = -(sa.grad.y + mu * sb.grad.y), r2 = -(sa.level - sb.level);
-		auto det3 = [](LD a, LD b, LD c, LD d, LD e, LD f, LD g, LD h, LD i) {
-			return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
-		};
-		const LD det = det3(h11, h12, g1, h12, h22, g2, d1, d2, 0.0L);
-		if (!(std::fabs(det) > 0.0L))
-			break;
-		const LD dx = det3(r0, h12, g1, r1, h22, g2, r2, d2, 0.0L) / det;
-		const LD dy = det3(h11, r0, g1, h12, r1, g2, d1, r2, 0.0L) / det;
-		const LD dm = det3(h11, h12, r0, h12, h22, r1, d1, d2, r2) / det;
-		const V next{X.x + dx, X.y + dy};
-		const Side na = side(A, pa, next), nb = side(B, pb, next);
-		const LD nres = residual(na, nb, mu + dm);
-		if (!(nres < res) || !(mu + dm > 0.0L))
-			break;
-		X = next;
-		mu += dm;
-		sa = na;
-		sb = nb;
-		res = nres;
-	}
-	return X;
-}
 
 /// Common level of two convex superellipse-family shapes: the root of h(L) = G(L) − L with
 /// G(L) = min of λA over B's solid level-L set, i.e. 0 (λA at A's centre) when A's centre lies
@@ -456,7 +492,7 @@ inline CommonLevelResult CommonLevelRef(const RefShape& A, const RefPose& pa, co
 	const LD logC = 0.5L * (lo + hi);
 	r.level = std::exp(logC);
 	r.point = SurfaceMin(A, pa, B, pb, r.level, count, 3, &unit).point;
-	r.point = PolishCommonPoint(A, pa, B, pb, r.point);
+	r.point = PolishLagrange(A, pa, B, pb, r.point, true);
 	return r;
 }
 

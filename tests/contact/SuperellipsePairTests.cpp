@@ -4,7 +4,7 @@
 //
 // Reference (PairReference.h, CommonContactRef): the common level as the fixed point of the
 // surface minimum (ContactReference.h, CommonLevelRef), its point polished by Newton's method in
-// long double (PolishCommonPoint), the normal from the long-double gradients there, and the
+// long double (PolishLagrange), the normal from the long-double gradients there, and the
 // points by bisection along the normal, all from the shapes' formulas; nothing of the library's
 // solvers. (Unpolished, the minimum's point was fixed only to ~3e-10 of the size, the square
 // root of the rounding of the values it compares, and that was what these tests measured
@@ -637,7 +637,7 @@ TEST_CASE("superellipse pairs: poses with Box2D's float rotations give unit norm
 TEST_CASE("superellipse pairs: a separated n = 4, m = 8 pose: the contact and the polished reference match a 60-digit solution")
 {
 	// A cold pose of b2a_bench_pairs (superellipse_n4_m8, seed 1; common level 4.43): before
-	// PolishCommonPoint the reference's common point was 3.1e-10 of the size off, its normal
+	// PolishLagrange the reference's common point was 3.1e-10 of the size off, its normal
 	// 5.1e-11 and its point on A 1.06e-9, which the bench reported as the library's error. The
 	// values: Newton on (∇λA + μ∇λB, λA − λB) in 60-digit arithmetic (mpmath) from these exact
 	// doubles, the points the far crossings of the normal line through it.
