@@ -3,7 +3,8 @@
 // Nothing here calls the library's level, gradient, radius, support or solver functions: the
 // shapes are ref::RefShape (tests/contact/ContactReference.h), evaluated in long double, and only
 // the poses' stored cosine and sine are taken from the library (ref::Of). What is here:
-//  - Deriv/WorldDeriv: value, gradient and Hessian of a level function from its formula;
+//  - WorldDeriv: value, gradient and Hessian of a level function from its formula (the
+//    reference's BodyDeriv and WorldDeriv, tests/contact/ContactReference.h, at a Posed);
 //  - Support: the point of a level set with a given outward normal (closed form for
 //    superellipses, a scan and a golden search over the polar angle for the heart's hull);
 //  - Polish: Newton on the optimality conditions of a level problem, in long double;
@@ -27,6 +28,10 @@ using ref::LD;
 using ref::RefPose;
 using ref::RefShape;
 using ref::V;
+using ref::Deriv;
+using ref::BodyDeriv;
+using ref::PowZ;
+using ref::Sign;
 
 /// A shape at a placement, both in long double.
 struct Posed
@@ -35,62 +40,8 @@ struct Posed
 	RefPose pose;   ///< its placement
 };
 
-/// Value, gradient and Hessian of a level function (body or world frame).
-struct Deriv
-{
-	LD value = 0.0L; ///< λ
-	V grad;          ///< ∇λ
-	LD hxx = 0.0L;   ///< ∂²λ/∂x²
-	LD hxy = 0.0L;   ///< ∂²λ/∂x∂y
-	LD hyy = 0.0L;   ///< ∂²λ/∂y²
-};
-
-/// x^e for x ≥ 0 with 0^0 = 1 (the Hessian of an n = 2 superellipse on its axis).
-inline LD PowZ(LD x, LD e) { return e == 0.0L ? 1.0L : ref::PowL(x, e); }
-
-/// Sign of x as −1, 0 or 1.
-inline LD Sign(LD x) { return x > 0.0L ? 1.0L : (x < 0.0L ? -1.0L : 0.0L); }
-
-/// Body-frame derivatives from the formulas (METHOD.md):
-///  - superellipse λ = |x/a|^n + |y/b|^m: λ_x = (n/a) sgn(x) |x/a|^{n−1}, λ_xx = n(n−1)/a² |x/a|^{n−2},
-///    λ_xy = 0 (likewise in y);
-///  - heart λ = x² + y² − |x|^{2/3} y: λ_x = 2x − (2/3) sgn(x) |x|^{−1/3} y, λ_y = 2y − |x|^{2/3},
-///    λ_xx = 2 + (2/9)|x|^{−4/3} y, λ_xy = −(2/3) sgn(x)|x|^{−1/3}, λ_yy = 2. On the axis x = 0 the
-///    |x|-terms are singular; they are dropped there (the axis is never a polished point).
-inline Deriv BodyDeriv(const RefShape& s, V x)
-{
-	Deriv d;
-	if (s.kind == RefShape::Kind::heart)
-	{
-		const LD c = std::cbrt(std::fabs(x.x)), sg = Sign(x.x); // c = |x|^{1/3}
-		d.value = x.x * x.x + x.y * x.y - c * c * x.y;
-		d.grad = {c > 0.0L ? 2.0L * x.x - (2.0L / 3.0L) * sg * x.y / c : 0.0L, 2.0L * x.y - c * c};
-		d.hxx = c > 0.0L ? 2.0L + (2.0L / 9.0L) * x.y / (c * c * c * c) : 2.0L;
-		d.hxy = c > 0.0L ? -(2.0L / 3.0L) * sg / c : 0.0L;
-		d.hyy = 2.0L;
-		return d;
-	}
-	const LD X = x.x / s.a, Y = x.y / s.b, u = std::fabs(X), v = std::fabs(Y);
-	d.value = ref::PowL(u, s.n) + ref::PowL(v, s.m);
-	d.grad = {s.n / s.a * Sign(X) * PowZ(u, s.n - 1.0L), s.m / s.b * Sign(Y) * PowZ(v, s.m - 1.0L)};
-	d.hxx = s.n * (s.n - 1.0L) / (s.a * s.a) * PowZ(u, s.n - 2.0L);
-	d.hyy = s.m * (s.m - 1.0L) / (s.b * s.b) * PowZ(v, s.m - 2.0L);
-	return d;
-}
-
-/// World-frame derivatives at a world point: ∇ = R∇_body, H = R H_body Rᵀ.
-inline Deriv WorldDeriv(const Posed& p, V X)
-{
-	const Deriv b = BodyDeriv(p.shape, ref::ToBodyL(p.pose, X));
-	const LD c = p.pose.c, s = p.pose.s;
-	Deriv w;
-	w.value = b.value;
-	w.grad = ref::RotateL(p.pose, b.grad);
-	w.hxx = c * c * b.hxx - 2.0L * c * s * b.hxy + s * s * b.hyy;
-	w.hyy = s * s * b.hxx + 2.0L * c * s * b.hxy + c * c * b.hyy;
-	w.hxy = c * s * (b.hxx - b.hyy) + (c * c - s * s) * b.hxy;
-	return w;
-}
+/// World-frame derivatives at a world point (ref::WorldDeriv).
+inline Deriv WorldDeriv(const Posed& p, V X) { return ref::WorldDeriv(p.shape, p.pose, X); }
 
 /// Hessian times a vector.
 inline V HessTimes(const Deriv& d, V v) { return {d.hxx * v.x + d.hxy * v.y, d.hxy * v.x + d.hyy * v.y}; }

@@ -152,25 +152,6 @@ struct RefShape
 		return {n / a * sx * PowL(std::fabs(X), n - 1.0L), m / b * sy * PowL(std::fabs(Y), m - 1.0L)};
 	}
 
-	/// ∇²λ(x) in the body frame (xx, xy, yy), to polish a point by Newton's method: for a
-	/// superellipse n(n − 1)|X|^{n−2}/a², 0, m(m − 1)|Y|^{m−2}/b² (n, m ≥ 2); for the heart
-	/// 2 + (2/9)|x|^{−4/3}y, −(2/3)sgn(x)|x|^{−1/3}, 2, infinite on its axis x = 0.
-	void Hessian(V x, LD& xx, LD& xy, LD& yy) const
-	{
-		if (kind == Kind::heart)
-		{
-			const LD ax = std::fabs(x.x), c = std::cbrt(ax);
-			const LD sg = x.x > 0 ? 1.0L : (x.x < 0 ? -1.0L : 0.0L);
-			xx = 2.0L + (2.0L / 9.0L) * x.y / (c * ax);
-			xy = -(2.0L / 3.0L) * sg / c;
-			yy = 2.0L;
-			return;
-		}
-		xx = n * (n - 1.0L) / (a * a) * PowL(std::fabs(x.x / a), n - 2.0L);
-		xy = 0.0L;
-		yy = m * (m - 1.0L) / (b * b) * PowL(std::fabs(x.y / b), m - 2.0L);
-	}
-
 	/// Body point of the level-L set at curve parameter s (period 4, counter-clockwise, s = 0 on
 	/// the +x axis, s = 1, 2, 3 on the +y, −x, −y axes).
 	///  - Superellipse: X = a L^{1/n} cos(τ)^{2/n}, Y = b L^{1/m} sin(τ)^{2/m} per quadrant, which
@@ -273,7 +254,63 @@ std::pair<LD, LD> Minimise1D(F&& f, LD lo, LD hi)
 	return {best, fbest};
 }
 
-/// Result of a surface minimum.
+/// Value, gradient and Hessian of a level function (body or world frame).
+struct Deriv
+{
+	LD value = 0.0L; ///< λ
+	V grad;          ///< ∇λ
+	LD hxx = 0.0L;   ///< ∂²λ/∂x²
+	LD hxy = 0.0L;   ///< ∂²λ/∂x∂y
+	LD hyy = 0.0L;   ///< ∂²λ/∂y²
+};
+
+/// x^e for x ≥ 0 with 0^0 = 1 (the Hessian of an n = 2 superellipse on its axis).
+inline LD PowZ(LD x, LD e) { return e == 0.0L ? 1.0L : PowL(x, e); }
+
+/// Sign of x as −1, 0 or 1.
+inline LD Sign(LD x) { return x > 0.0L ? 1.0L : (x < 0.0L ? -1.0L : 0.0L); }
+
+/// Body-frame derivatives from the formulas (METHOD.md):
+///  - superellipse λ = |x/a|^n + |y/b|^m: λ_x = (n/a) sgn(x) |x/a|^{n−1}, λ_xx = n(n−1)/a² |x/a|^{n−2},
+///    λ_xy = 0 (likewise in y);
+///  - heart λ = x² + y² − |x|^{2/3} y: λ_x = 2x − (2/3) sgn(x) |x|^{−1/3} y, λ_y = 2y − |x|^{2/3},
+///    λ_xx = 2 + (2/9)|x|^{−4/3} y, λ_xy = −(2/3) sgn(x)|x|^{−1/3}, λ_yy = 2. On the axis x = 0 the
+///    |x|-terms are singular; they are dropped there (PolishLagrange does not polish there).
+inline Deriv BodyDeriv(const RefShape& s, V x)
+{
+	Deriv d;
+	if (s.kind == RefShape::Kind::heart)
+	{
+		const LD c = std::cbrt(std::fabs(x.x)), sg = Sign(x.x); // c = |x|^{1/3}
+		d.value = x.x * x.x + x.y * x.y - c * c * x.y;
+		d.grad = {c > 0.0L ? 2.0L * x.x - (2.0L / 3.0L) * sg * x.y / c : 0.0L, 2.0L * x.y - c * c};
+		d.hxx = c > 0.0L ? 2.0L + (2.0L / 9.0L) * x.y / (c * c * c * c) : 2.0L;
+		d.hxy = c > 0.0L ? -(2.0L / 3.0L) * sg / c : 0.0L;
+		d.hyy = 2.0L;
+		return d;
+	}
+	const LD X = x.x / s.a, Y = x.y / s.b, u = std::fabs(X), v = std::fabs(Y);
+	d.value = PowL(u, s.n) + PowL(v, s.m);
+	d.grad = {s.n / s.a * Sign(X) * PowZ(u, s.n - 1.0L), s.m / s.b * Sign(Y) * PowZ(v, s.m - 1.0L)};
+	d.hxx = s.n * (s.n - 1.0L) / (s.a * s.a) * PowZ(u, s.n - 2.0L);
+	d.hyy = s.m * (s.m - 1.0L) / (s.b * s.b) * PowZ(v, s.m - 2.0L);
+	return d;
+}
+
+/// World-frame derivatives at a world point: ∇ = R∇_body, H = R H_body Rᵀ.
+inline Deriv WorldDeriv(const RefShape& shape, const RefPose& pose, V X)
+{
+	const Deriv b = BodyDeriv(shape, ToBodyL(pose, X));
+	const LD c = pose.c, s = pose.s;
+	Deriv w;
+	w.value = b.value;
+	w.grad = RotateL(pose, b.grad);
+	w.hxx = c * c * b.hxx - 2.0L * c * s * b.hxy + s * s * b.hyy;
+	w.hyy = s * s * b.hxx + 2.0L * c * s * b.hxy + c * c * b.hyy;
+	w.hxy = c * s * (b.hxx - b.hyy) + (c * c - s * s) * b.hxy;
+	return w;
+}
+
 /// A Lagrange point polished by Newton's method in long double: the common point, where
 /// ∇λA + μ∇λB = 0 and λA = λB (`common`), or the smallest λA on B's level-L set, where
 /// ∇λA + μ∇λB = 0 and λB = L. A minimum found by comparing values (CommonLevelRef's and
@@ -283,31 +320,30 @@ std::pair<LD, LD> Minimise1D(F&& f, LD lo, LD hi)
 /// steps square that error away. Each is kept only while it lowers the residual, at most 8 are
 /// taken, and X is returned unchanged where they would move it by more than 1e-6 of its distance
 /// from B's centre (not the local root), or where a shape has no Hessian there (a superellipse
-/// exponent below 2, the heart's axis).
+/// exponent below 2, the heart's axis, where BodyDeriv drops its infinite terms).
 inline V PolishLagrange(const RefShape& A, const RefPose& pa, const RefShape& B, const RefPose& pb, V X, bool common, LD L = 1.0L)
 {
 	auto smooth = [](const RefShape& S) { return S.kind == RefShape::Kind::heart || (S.n >= 2.0L && S.m >= 2.0L); };
 	if (!smooth(A) || !smooth(B))
 		return X;
+	// WorldDeriv, with the level from Level itself (SurfaceMin compares the values it gives) and
+	// none on the heart's axis.
 	struct Side
 	{
 		LD level;
 		V grad;
 		LD hxx, hxy, hyy;
+		bool onAxis;
 	};
 	auto side = [](const RefShape& S, const RefPose& p, V at) {
+		const Deriv d = WorldDeriv(S, p, at);
 		const V x = ToBodyL(p, at);
-		LD bxx, bxy, byy;
-		S.Hessian(x, bxx, bxy, byy);
-		// R·H·Rᵀ with R = [[c, −s], [s, c]].
-		const LD c = p.c, s = p.s;
-		const LD xx = c * c * bxx - 2.0L * c * s * bxy + s * s * byy;
-		const LD xy = c * s * (bxx - byy) + (c * c - s * s) * bxy;
-		const LD yy = s * s * bxx + 2.0L * c * s * bxy + c * c * byy;
-		return Side{S.Level(x), RotateL(p, S.Gradient(x)), xx, xy, yy};
+		return Side{S.Level(x), d.grad, d.hxx, d.hxy, d.hyy, S.kind == RefShape::Kind::heart && x.x == 0.0L};
 	};
 	const V start = X;
 	Side sa = side(A, pa, X), sb = side(B, pb, X);
+	if (sa.onAxis || sb.onAxis)
+		return X;
 	const LD gb2 = Dot(sb.grad, sb.grad);
 	if (!(gb2 > 0.0L))
 		return X;
@@ -340,7 +376,7 @@ inline V PolishLagrange(const RefShape& A, const RefPose& pa, const RefShape& B,
 		const V next{X.x + dx, X.y + dy};
 		const Side na = side(A, pa, next), nb = side(B, pb, next);
 		const LD nres = residual(na, nb, mu + dm);
-		if (!(nres < res) || !(mu + dm > 0.0L))
+		if (na.onAxis || nb.onAxis || !(nres < res) || !(mu + dm > 0.0L))
 			break;
 		X = next;
 		mu += dm;
@@ -351,6 +387,7 @@ inline V PolishLagrange(const RefShape& A, const RefPose& pa, const RefShape& B,
 	return Len(X - start) <= 1e-6L * Len(start - pb.p) ? X : start;
 }
 
+/// Result of a surface minimum.
 struct SurfaceMinResult
 {
 	LD value = 0.0L; ///< smallest level of A on B's level-L surface
@@ -362,9 +399,10 @@ struct SurfaceMinResult
 /// The smallest level of A over B's level-L surface (world poses pa, pb): `count` samples
 /// (or the precomputed `curve`), the lowest `candidates` local minima polished by Minimise1D,
 /// and the corners s = 0, 1, 2, 3 (axis points, where superellipses with an exponent below 2
-/// and the heart have kinks) as extra candidates.
+/// and the heart have kinks) as extra candidates; the point then by PolishLagrange unless
+/// `polish` is false.
 inline SurfaceMinResult SurfaceMin(const RefShape& A, const RefPose& pa, const RefShape& B, const RefPose& pb, LD L,
-                                   int count = 4096, int candidates = 8, const Curve* curve = nullptr)
+                                   int count = 4096, int candidates = 8, const Curve* curve = nullptr, bool polish = true)
 {
 	Curve local;
 	// A superellipse's level-L set is its level-1 set stretched by (L^{1/n}, L^{1/m}) (exactly so
@@ -416,7 +454,7 @@ inline SurfaceMinResult SurfaceMin(const RefShape& A, const RefPose& pa, const R
 	// minimum is a kink (the heart's |x|^{2/3} valley along its axis) there is no Lagrange point,
 	// and Newton's steps end beside it on a higher value: the polish is kept only where the
 	// value is as low, to the rounding of the values (1e-14 of it).
-	const V exact = PolishLagrange(A, pa, B, pb, out.point, false, L);
+	const V exact = polish ? PolishLagrange(A, pa, B, pb, out.point, false, L) : out.point;
 	const LD exactValue = A.Level(ToBodyL(pa, exact));
 	if ((exact.x != out.point.x || exact.y != out.point.y) && exactValue <= out.value + 1e-14L * std::fabs(out.value))
 	{
@@ -458,7 +496,8 @@ inline CommonLevelResult CommonLevelRef(const RefShape& A, const RefPose& pa, co
 	auto h = [&](LD logL) {
 		const LD L = std::exp(logL);
 		if (centreA <= L) return -L;
-		return SurfaceMin(A, pa, B, pb, L, count, 3, &unit).value - L;
+		// (Unpolished: only the value counts here, which the polish moves by its rounding.)
+		return SurfaceMin(A, pa, B, pb, L, count, 3, &unit, false).value - L;
 	};
 	// Bracket in log L by steps of 4: h > 0 at small L (A's level on a tiny B is large), h < 0
 	// at large L (B's level set swallows A's centre).
@@ -573,7 +612,7 @@ struct PwResult
 	LD level = 0.0L; ///< common level C (F_A = F_B = C at the point)
 	V point;         ///< the common point
 	LD mu = 0.0L;    ///< multiplier (∇F_A + μ∇F_B = 0)
-	V normal;        ///< unit ∇F_A at the point (PwNormal)
+	V normal;        ///< the unit normal, ∇F_A's direction at the exact point (PwNormal)
 };
 
 /// Perram–Wertheim common level of two ellipses: S(μ) = min_X (F_A + μF_B)/(1 + μ) is concave
