@@ -334,7 +334,8 @@ ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, con
 	if (!eb || CentresCoincide(a, pa, b, pb))
 		return ConvexContact(a, pa, b, pb, options, warm);
 	EllipsePairPoints points;
-	const LevelResult level = CheckedResult(SolveEllipsePairLevel(*ea, pa, *eb, pb, warm, &points));
+	LevelResult level = SolveEllipsePairLevel(*ea, pa, *eb, pb, warm, &points);
+	CheckResult(level);
 	if (!level.Ok() || !(level.multiplier > 0.0))
 		return ConvexContact(a, pa, b, pb, options, warm);
 	RecordWarmStart(warm, pa, pb, level);
@@ -392,12 +393,14 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 		}
 	}
 	SuperellipsePairPoint at;
-	LevelResult level = CheckedResult(SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at, hand));
+	LevelResult level = SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at, hand);
+	CheckResult(level);
 	if (handOver.taken)
 	{
 		if (FinishSuperellipseContact(*sa, pa, *sb, pb, options, handOver.point, handOver.multiplier, handOver.iterations, warm, c))
 			return c;
-		level = CheckedResult(SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at));
+		level = SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at);
+		CheckResult(level);
 	}
 	if (!level.Ok() || !at.valid)
 		return ConvexContact(a, pa, b, pb, options, warm);
@@ -656,6 +659,15 @@ ContactResult Dispatch(const Shape& a, const Pose& pa, const Shape& b, const Pos
 	}
 	return table.cell[i][j](a, pa, b, pb, options, warm);
 }
+
+// Dispatch's answer checked where it lies, the caller's result (one named return).
+ContactResult CheckedDispatch(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
+                              const SolverOptions& options, WarmStart* warm)
+{
+	ContactResult c = Dispatch(a, pa, b, pb, method, options, warm);
+	CheckResult(c);
+	return c;
+}
 } // namespace
 
 ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
@@ -663,7 +675,7 @@ ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, con
 {
 	if (!PoseFinite(pa) || !PoseFinite(pb))
 		return NonFinitePoseFailure<ContactResult>();
-	return CheckedResult(Dispatch(a, pa, b, pb, method, options, warm));
+	return CheckedDispatch(a, pa, b, pb, method, options, warm);
 }
 
 } // namespace b2a

@@ -113,7 +113,7 @@ LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, con
 			r = SolveCommonLevelGrid(a, pa, b, pb, options); // convex, not smooth
 		}
 	}
-	r = CheckedResult(r);
+	CheckResult(r);
 	RecordWarmStart(warm, pa, pb, r, &slide); // (valid only where Newton's answer is r)
 	return r;
 }
