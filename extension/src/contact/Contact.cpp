@@ -178,16 +178,14 @@ Vec2 ContactNormal(const Shape& a, const Pose& pa, const Shape& b, const Pose& p
 	return n;
 }
 
-// What a contact takes over from its level solve unchanged.
-ContactResult ContactOfLevel(const LevelResult& level)
+// What a contact takes over from its level solve unchanged, written into it.
+void TakeOverLevel(ContactResult& c, const LevelResult& level)
 {
-	ContactResult c;
 	c.status = level.status;
 	c.method = level.method;
 	c.iterations = level.iterations;
 	c.level = level.level;
 	c.point = level.point;
-	return c;
 }
 
 // ContactFromLevel, given A's body gradient at the level point where the caller has it
@@ -195,7 +193,8 @@ ContactResult ContactOfLevel(const LevelResult& level)
 ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const LevelResult& level,
                                     bool touching, bool pointOnB, const Vec2* gradientA)
 {
-	ContactResult c = ContactOfLevel(level);
+	ContactResult c;
+	TakeOverLevel(c, level);
 	const Vec2 X = level.point;
 	// The ellipse-pair solver's normal is ∇λA or −∇λB at its point, whichever its rounding
 	// disturbs less (at the root they are opposed: the point minimises (1 − s)λA + sλB), from
@@ -328,18 +327,27 @@ ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, con
 	// solver, the virtual calls and the general line search: ~20 % of a warm ellipse contact.
 	// Anything else (other shapes under these families, coincident centres, a failed solve,
 	// a line missing a particle) takes the generic path, which decides as before.
+	// Every path returns c, which is then built in the caller's result (the rare ones copy into
+	// it): with other objects returned beside it, c was copied out on every contact.
+	ContactResult c;
 	const SuperellipseShape* ea = AsPlainEllipse(a);
 	const SuperellipseShape* eb = ea ? AsPlainEllipse(b) : nullptr;
 	// (A pose that is not finite fails CentresCoincide or the solve, and ConvexContact says so.)
 	if (!eb || CentresCoincide(a, pa, b, pb))
-		return ConvexContact(a, pa, b, pb, options, warm);
+	{
+		c = ConvexContact(a, pa, b, pb, options, warm);
+		return c;
+	}
 	EllipsePairPoints points;
 	LevelResult level = SolveEllipsePairLevel(*ea, pa, *eb, pb, warm, &points);
 	CheckResult(level);
 	if (!level.Ok() || !(level.multiplier > 0.0))
-		return ConvexContact(a, pa, b, pb, options, warm);
+	{
+		c = ConvexContact(a, pa, b, pb, options, warm);
+		return c;
+	}
 	RecordWarmStart(warm, pa, pb, level);
-	ContactResult c = ContactOfLevel(level);
+	TakeOverLevel(c, level);
 	c.normal = level.normal;
 	if (points.valid)
 	{
@@ -349,7 +357,8 @@ ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, con
 	else if (!EllipseLinePoint(*ea, pa, level.point, c.normal, c.pointA) ||
 	         !EllipseLinePoint(*eb, pb, level.point, -c.normal, c.pointB))
 	{
-		return ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
+		c = ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
+		return c;
 	}
 	SetSeparation(c, level.level <= 1.0);
 	return c;
@@ -361,14 +370,18 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 	// What SolveCommonLevel and ContactFromLevel do for two smooth superellipses, with the levels
 	// evaluated inline and the normal from the solve's last gradients; anything else, and what
 	// the fast solve does not finish, takes the generic path (which decides as before).
+	// (Every path returns c, as in EllipseContact.)
+	ContactResult c;
 	const SuperellipseShape* sa = AsSmoothSuperellipse(a);
 	const SuperellipseShape* sb = sa ? AsSmoothSuperellipse(b) : nullptr;
 	if (!sb || CentresCoincide(a, pa, b, pb))
-		return ConvexContact(a, pa, b, pb, options, warm);
+	{
+		c = ConvexContact(a, pa, b, pb, options, warm);
+		return c;
+	}
 	// Integer exponents: the last Newton steps and the points on the raw levels
 	// (FinishSuperellipseContact), from a warm start or from where the cold solve's steps are
 	// small; where it declines, the full solve from the start.
-	ContactResult c;
 	SuperellipseHandOver handOver;
 	SuperellipseHandOver* hand = nullptr;
 	if (FinishApplies(*sa, *sb))
@@ -403,9 +416,12 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 		CheckResult(level);
 	}
 	if (!level.Ok() || !at.valid)
-		return ConvexContact(a, pa, b, pb, options, warm);
+	{
+		c = ConvexContact(a, pa, b, pb, options, warm);
+		return c;
+	}
 	RecordWarmStart(warm, pa, pb, level, &at.slide);
-	c = ContactOfLevel(level);
+	TakeOverLevel(c, level);
 	// ContactNormal's mean of the unit normals (they are opposed: the solve checked).
 	c.normal = Normalize(Normalize(at.gradA) - Normalize(at.gradB));
 	// ContactFromLevel's points, the first step of each line crossing from the level and
@@ -413,7 +429,10 @@ ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b
 	const double knownA[2] = {at.levelA, Dot(at.gradA, c.normal)}, knownB[2] = {at.levelB, -Dot(at.gradB, c.normal)};
 	if (!SuperellipseLinePoint(*sa, pa, level.point, c.normal, knownA, c.pointA) ||
 	    !SuperellipseLinePoint(*sb, pb, level.point, -c.normal, knownB, c.pointB))
-		return ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
+	{
+		c = ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
+		return c;
+	}
 	SetSeparation(c, level.level <= 1.0);
 	return c;
 }
