@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <typeinfo>
 
 namespace b2a
 {
@@ -159,17 +158,6 @@ bool EllipseLinePoint(const SuperellipseShape& s, const Pose& p, Vec2 X, Vec2 di
 	const double u = x.x * t.invA, v = x.y * t.invB, du = d.x * t.invA, dv = d.y * t.invB;
 	const double level = u * u + v * v;
 	return LineRule(X, dir, du * du + dv * dv, u * du + v * dv, level, [&] { return ToWorld(p, x / std::sqrt(level)); }, point);
-}
-
-const SuperellipseShape* AsPlainEllipse(const Shape& s)
-{
-	if (s.Family() != ShapeFamily::ellipse && s.Family() != ShapeFamily::circle)
-		return nullptr;
-	// The class is final: comparing the dynamic type is exact and costs less than a dynamic_cast
-	// (two per contact between ellipses). A superellipse is in these families exactly when
-	// n = m = 2, with the level f itself (ζ = 0) or f^(1/1) (ζ = 1, the only ζ with n = 2ζ = 2);
-	// another Shape subclass may claim the family, hence the type test.
-	return typeid(s) == typeid(SuperellipseShape) ? static_cast<const SuperellipseShape*>(&s) : nullptr;
 }
 
 LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,

@@ -2,7 +2,10 @@
 #pragma once
 
 #include "b2analytic/ContactResult.h"
+#include "b2analytic/SuperellipseShape.h"
 #include "contact/PairFrame.h"
+
+#include <typeinfo>
 
 namespace b2a
 {
@@ -69,9 +72,18 @@ inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, con
 	RecordWarmStartLocal(*warm, pa, pb, ToBody(pa, level.point), ToBody(pb, level.point), level.multiplier, slide);
 }
 
-class SuperellipseShape;
-/// The shape as a plain ellipse or circle (n = m = 2, level f or f^1), else null.
-const SuperellipseShape* AsPlainEllipse(const Shape& s);
+/// The shape as a plain ellipse or circle (n = m = 2, level f or f^1), else null. (Inline, as
+/// AsSmoothSuperellipse: two of them open every contact of their pairs.)
+inline const SuperellipseShape* AsPlainEllipse(const Shape& s)
+{
+	if (s.Family() != ShapeFamily::ellipse && s.Family() != ShapeFamily::circle)
+		return nullptr;
+	// The class is final: comparing the dynamic type is exact and costs less than a dynamic_cast
+	// (two per contact between ellipses). A superellipse is in these families exactly when
+	// n = m = 2, with the level f itself (ζ = 0) or f^(1/1) (ζ = 1, the only ζ with n = 2ζ = 2);
+	// another Shape subclass may claim the family, hence the type test.
+	return typeid(s) == typeid(SuperellipseShape) ? static_cast<const SuperellipseShape*>(&s) : nullptr;
+}
 /// A plain ellipse's point on the line through the world point X along `dir`, by ContactFromLevel's
 /// rule for a convex shape: X itself when its level is within 1e-10 of 1, else the far crossing
 /// (the larger root of the line's quadratic in the body frame), and where the line misses the
@@ -93,7 +105,15 @@ LevelResult SolveEllipsePairLevel(const SuperellipseShape& a, const Pose& pa, co
 
 /// The shape as a superellipse that SolveSuperellipsePairLevel takes (smooth: n, m ≥ 2; the raw
 /// level f, not the ζ-form), else null.
-const SuperellipseShape* AsSmoothSuperellipse(const Shape& s);
+inline const SuperellipseShape* AsSmoothSuperellipse(const Shape& s)
+{
+	// The class is final, so the type test is exact (and cheaper than a dynamic_cast). The ζ-form's
+	// level f^{1/ζ} is left to the generic solver.
+	if (typeid(s) != typeid(SuperellipseShape) || !s.IsSmoothConvex())
+		return nullptr;
+	const SuperellipseShape* e = static_cast<const SuperellipseShape*>(&s);
+	return e->IsNormalised() ? nullptr : e;
+}
 /// What the superellipse pair solver knows at its answer: the contact's normal and points
 /// follow from it without evaluating the shapes again.
 struct SuperellipsePairPoint

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <typeinfo>
 
 namespace b2a
 {
@@ -235,16 +234,6 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 // close to their boxes).
 bool Blocky(const PairInA& p) { return std::min(std::min(p.a.n, p.a.m), std::min(p.b.n, p.b.m)) >= 3.0; }
 } // namespace
-
-const SuperellipseShape* AsSmoothSuperellipse(const Shape& s)
-{
-	// The class is final, so the type test is exact (and cheaper than a dynamic_cast). The ζ-form's
-	// level f^{1/ζ} is left to the generic solver.
-	if (typeid(s) != typeid(SuperellipseShape) || !s.IsSmoothConvex())
-		return nullptr;
-	const SuperellipseShape* e = static_cast<const SuperellipseShape*>(&s);
-	return e->IsNormalised() ? nullptr : e;
-}
 
 LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
                                        const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at,
