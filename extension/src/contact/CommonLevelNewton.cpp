@@ -209,7 +209,7 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 	result.normal = Normalize(p.A.grad);
 	result.multiplier = p.mu;
 	if (slide) // ξ has the world's axes in units of the frame's scale
-		ComputeSlide(p.A.grad, p.A.hess, p.B.grad, p.B.hess, result.normal, p.mu, f.scale, Rot(), *slide);
+		ComputeSlide(p.A.grad, p.A.hess, p.B.hess, result.normal, p.mu, f.scale, Rot(), *slide);
 	return result;
 }
 

@@ -5,6 +5,7 @@
 #include "b2analytic/SuperellipseShape.h"
 #include "contact/PairFrame.h"
 
+#include <cmath>
 #include <typeinfo>
 
 namespace b2a
@@ -38,6 +39,18 @@ struct LevelSlide
 	double coefficients[3] = {0.0, 0.0, 0.0};   ///< WarmStart::slide (world lengths)
 	bool valid = false;                         ///< false: none (flat on flat, or not computed)
 };
+/// Writes a slide into a warm start, in float (a hint for the next start): A's outward normal in
+/// A's and in B's body frame, and the coefficients (WarmStart::slide).
+inline void WriteSlide(WarmStart& warm, Vec2 normalA, Vec2 normalB, const double coefficients[3])
+{
+	warm.normalA[0] = float(normalA.x);
+	warm.normalA[1] = float(normalA.y);
+	warm.normalB[0] = float(normalB.x);
+	warm.normalB[1] = float(normalB.y);
+	for (int i = 0; i < 3; ++i)
+		warm.slide[i] = float(coefficients[i]);
+	warm.hasSlide = std::isfinite(warm.slide[0] + warm.slide[1] + warm.slide[2]);
+}
 /// Writes a valid solve's slide into a warm start (RecordWarmStart's part for the slide).
 void RecordSlide(WarmStart* warm, const Pose& pa, const Pose& pb, const LevelSlide& slide);
 

@@ -202,12 +202,17 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 	}
 
 	// The next warm start: the point in both frames, μ, and the slide (from f's derivatives: the
-	// curvatures and twists of the level curves, and so the slide, are the gauge's).
+	// curvatures and twists of the level curves, and so the slide, are the gauge's), written with
+	// the normal as it is, in A's frame, and turned to B's from the poses (kept in memory: the
+	// crossing's B-frame direction, kept alive to here, made cold contacts, which take no slide,
+	// 1 to 3 % dearer). (With one gradient length and no world normal to turn back, a warm
+	// contact 45 instructions cheaper.)
 	if (warm)
 	{
-		LevelSlide slide;
-		ComputeSlide(e.gA, e.hA, e.gB, e.hB, n, mu, 1.0, pa.q, slide);
-		RecordWarmStartLocal(*warm, pa, pb, x, e.xB, mu, &slide);
+		RecordWarmStartLocal(*warm, pa, pb, x, e.xB, mu, nullptr);
+		double coefficients[3];
+		if (SlideCoefficients(e.hA, e.hB, n, mu, std::sqrt(LengthSquared(e.gA)), 1.0, coefficients))
+			WriteSlide(*warm, n, InvRotate(pb.q, Rotate(pa.q, n)), coefficients);
 	}
 	return true;
 }

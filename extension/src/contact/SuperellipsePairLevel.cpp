@@ -484,8 +484,8 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	{
 		at->slide.valid = false;
 		if (warm) // only a caller that keeps a warm start needs it
-			ComputeSlide(Vec2(q.A.gx, q.A.gy), Sym22{q.A.hxx, q.A.hxy, q.A.hyy}, Vec2(q.B.gx, q.B.gy),
-			             Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, nA, q.mu, size, pa.q, at->slide);
+			ComputeSlide(Vec2(q.A.gx, q.A.gy), Sym22{q.A.hxx, q.A.hxy, q.A.hyy}, Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, nA, q.mu,
+			             size, pa.q, at->slide);
 		at->gradA = Rotate(pa.q, Vec2(q.A.fx, q.A.fy)) / size;
 		at->gradB = Rotate(pa.q, Vec2(q.B.fx, q.B.fy)) / size;
 		at->levelA = q.A.lambda;

@@ -9,11 +9,11 @@
 namespace b2a
 {
 
-/// The slide of an answer from both gauges' gradients and Hessians at the point, given in one
-/// frame whose length unit is `unit` world lengths and which `toWorld` turns to the world; n is
-/// A's outward unit normal in that frame.
-inline void ComputeSlide(Vec2 gradA, const Sym22& hessA, Vec2 gradB, const Sym22& hessB, Vec2 n, double mu, double unit, Rot toWorld,
-                  LevelSlide& out)
+/// The slide's coefficients (LevelSlide::coefficients, validity) of an answer from both gauges'
+/// Hessians at the point, in a frame whose length unit is `unit` world lengths: n is A's outward
+/// unit normal there, μ the multiplier and gradA = |∇ψA| (at the root |∇ψB| = |∇ψA|/μ).
+inline bool SlideCoefficients(const Sym22& hessA, const Sym22& hessB, Vec2 n, double mu, double gradA, double unit,
+                              double coefficients[3])
 {
 	// Where the common-level point goes, to first order, when B moves relative to A by a small
 	// rigid motion. At the point ξ, with A's outward normal n and tangent t = Perp(n), let B's
@@ -30,19 +30,30 @@ inline void ComputeSlide(Vec2 gradA, const Sym22& hessA, Vec2 gradB, const Sym22
 	// line, as it must, where the plain start v/(1 + μ) is exact only for translations; for a
 	// corner on a face it follows the corner. Flat on flat (κA + κB near zero) the slide is
 	// undetermined and none is recorded.
-	// With rA = |∇ψA|, rB = |∇ψB| and the quadratic forms written out, the three coefficients
-	// share one denominator: (κA + κB)·rA·rB = tᵀHA t·rB + tᵀHB t·rA.
+	// With rA = |∇ψA|, rB = rA/μ (∇ψA = −μ∇ψB at the root: one gradient's length is enough) and
+	// the quadratic forms written out, (κA + κB)·rB = (tᵀHA t + μ·tᵀHB t)/μ = D/μ, and with
+	// h = v·n/(1 + μ) the coefficients of ω, v·t and v·n are
+	//   rA/D,  μ·tᵀHB t/D,  (μ²·tᵀHB n − tᵀHA n)/((1 + μ)·D),
+	// over one division. The test on D is the flat-on-flat one: (κA + κB)·unit > 1e-6.
 	const Vec2 t = Perp(n);
 	const Vec2 ht = hessA * t, gt = hessB * t;
-	const double rA = std::sqrt(LengthSquared(gradA)), rB = std::sqrt(LengthSquared(gradB));
 	const double ttA = Dot(ht, t), ttB = Dot(gt, t), tnA = Dot(ht, n), tnB = Dot(gt, n);
-	const double den = ttA * rB + ttB * rA, inv = 1.0 / den, w = 1.0 / (1.0 + mu);
+	const double den = ttA + mu * ttB, inv = 1.0 / ((1.0 + mu) * den);
+	coefficients[0] = unit * gradA * (1.0 + mu) * inv;
+	coefficients[1] = mu * ttB * (1.0 + mu) * inv;
+	coefficients[2] = (mu * mu * tnB - tnA) * inv;
+	return ttA >= 0.0 && ttB >= 0.0 && den * unit > 1e-6 * gradA &&
+	       std::isfinite(coefficients[0] + coefficients[1] + coefficients[2]);
+}
+
+/// The slide of an answer (SlideCoefficients) from A's gauge gradient and both gauges' Hessians,
+/// given in one frame whose length unit is `unit` world lengths and which `toWorld` turns to the
+/// world; n is A's outward unit normal in that frame.
+inline void ComputeSlide(Vec2 gradA, const Sym22& hessA, const Sym22& hessB, Vec2 n, double mu, double unit, Rot toWorld,
+                         LevelSlide& out)
+{
+	out.valid = SlideCoefficients(hessA, hessB, n, mu, Length(gradA), unit, out.coefficients);
 	out.normal = Rotate(toWorld, n);
-	out.coefficients[0] = unit * rA * rB * inv;
-	out.coefficients[1] = ttB * rA * inv;
-	out.coefficients[2] = (tnB * rA * (1.0 - w) - tnA * rB * w) * inv;
-	out.valid = ttA >= 0.0 && ttB >= 0.0 && den * unit > 1e-6 * rA * rB &&
-	            std::isfinite(out.coefficients[0] + out.coefficients[1] + out.coefficients[2]);
 }
 
 /// Where a warm start puts the point at the new poses, in A's body frame: moved with B by the
