@@ -337,7 +337,6 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	// tenth of a heart contact), and a sample's value belongs to this call where its stamp is
 	// this call's generation (clearing the array instead was 5 % of a heart contact).
 	thread_local GridScratch scratch;
-	std::vector<double>& value = scratch.value;
 	if (int(scratch.stamp.size()) != n || ++scratch.generation == 0)
 	{
 		scratch.stamp.assign(n, 0);
@@ -345,12 +344,26 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		scratch.generation = 1;
 	}
 	const std::uint32_t generation = scratch.generation;
-	std::vector<std::uint32_t>& stamp = scratch.stamp;
-	value.resize(n);
+	// Sized once here and used through plain pointers below: through the vectors, every access
+	// reloaded the array's address (a virtual call or a store through a double* may have moved
+	// it, as far as the compiler knows).
+	const int runs = (n + SurfaceSamples::kRunLength - 1) / SurfaceSamples::kRunLength;
+	const int groups = (runs + SurfaceSamples::kGroupRuns - 1) / SurfaceSamples::kGroupRuns;
+	scratch.value.resize(n);
+	scratch.inA.resize(n);
+	scratch.bound.resize(runs);
+	scratch.groupBound.resize(groups);
+	scratch.discs.resize(std::max(groups, runs));
+	scratch.scanned.assign(runs, 0);
+	scratch.scannedRuns.resize(runs);
+	scratch.order.resize(runs);
+	scratch.minima.resize(n);
+	double* const value = scratch.value.data();
+	std::uint32_t* const stamp = scratch.stamp.data();
+	std::uint32_t* const raySolved = scratch.raySolved.data();
 	auto evaluated = [&](int k) { return stamp[k] == generation; };
 	const bool ownLevel = LB == b.SurfaceLevel();
-	std::vector<Vec2>& inA = scratch.inA; // each evaluated sample in A's body frame
-	inA.resize(n);
+	Vec2* const inA = scratch.inA.data(); // each evaluated sample in A's body frame
 	auto evaluate = [&](int k) {
 		const Vec2 p = ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB);
 		inA[k] = ToWorld(walk.bInA, p);
@@ -360,43 +373,38 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	};
 	// Samples are scanned a run at a time: run g is samples g·kRunLength … (g+1)·kRunLength, its
 	// last sample being the next run's first (sample 0 for the last run).
-	const int runs = (n + SurfaceSamples::kRunLength - 1) / SurfaceSamples::kRunLength;
 	auto runSamples = [&](int g, int& first, int& last) {
 		first = g * SurfaceSamples::kRunLength;
 		last = std::min(first + SurfaceSamples::kRunLength, n);
 	};
-	std::vector<char>& scanned = scratch.scanned;
-	scanned.assign(runs, 0);
+	char* const scanned = scratch.scanned.data(); // per run: evaluated whole
+	int* const scannedRuns = scratch.scannedRuns.data(); // those runs (in increasing order, sorted below)
+	int scannedCount = 0;
 	bool ok = true;
 	bool bounded = ownLevel && int(samples->runCentre.size()) == runs;
 	// Groups of runs are bounded first (their discs enclose their runs'), and a run's own disc
 	// only where its group's bound does not already rule it out: about half the bounds of a
 	// heart contact, which were a sixth of its time.
-	const int groups = (runs + SurfaceSamples::kGroupRuns - 1) / SurfaceSamples::kGroupRuns;
 	bool grouped = bounded && int(samples->groupCentre.size()) == groups;
-	std::vector<double>& bound = scratch.bound;
-	std::vector<double>& groupBound = scratch.groupBound;
+	double* const bound = scratch.bound.data();
+	double* const groupBound = scratch.groupBound.data();
 	const double noBound = -std::numeric_limits<double>::infinity();
 	// Discs are bounded together (Shape::LevelLowerBounds: the heart does two at a time).
-	std::vector<Vec2>& discs = scratch.discs;
-	discs.resize(std::max(groups, runs));
+	Vec2* const discs = scratch.discs.data();
 	auto boundDiscs = [&](const std::vector<Vec2>& centres, const std::vector<double>& radii, int first, int last, double* out) {
 		for (int i = first; i < last; ++i)
 			discs[i - first] = ToWorld(walk.bInA, centres[i]);
-		a.LevelLowerBounds(discs.data(), radii.data() + first, last - first, out);
+		a.LevelLowerBounds(discs, radii.data() + first, last - first, out);
 	};
 	if (grouped)
 	{
-		groupBound.resize(groups);
-		boundDiscs(samples->groupCentre, samples->groupRadius, 0, groups, groupBound.data());
+		boundDiscs(samples->groupCentre, samples->groupRadius, 0, groups, groupBound);
 		for (int G = 0; G < groups && grouped; ++G)
 			grouped = groupBound[G] > noBound; // else bound every run
 	}
-	if (bounded)
-		bound.resize(runs);
 	if (bounded && !grouped)
 	{
-		boundDiscs(samples->runCentre, samples->runRadius, 0, runs, bound.data());
+		boundDiscs(samples->runCentre, samples->runRadius, 0, runs, bound);
 		for (int g = 0; g < runs && bounded; ++g)
 			bounded = bound[g] > noBound; // else no bound: scan everything
 	}
@@ -409,7 +417,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	auto boundRuns = [&](int G) {
 		int first, last;
 		groupRuns(G, first, last);
-		boundDiscs(samples->runCentre, samples->runRadius, first, last, bound.data() + first);
+		boundDiscs(samples->runCentre, samples->runRadius, first, last, bound + first);
 		for (int g = first; g < last; ++g)
 			bound[g] = bound[g] > groupBound[G] ? bound[g] : groupBound[G];
 	};
@@ -423,13 +431,12 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		// runs whose bound is below the level found there are sorted (sorting all of them was a
 		// tenth of a heart contact), and only the groups whose bound is below it are opened.
 		double lowest = std::numeric_limits<double>::infinity();
-		scratch.scannedRuns.clear();
 		// A run's samples are evaluated together (Shape::Levels: one virtual call a run, not one
 		// a sample), but for its end samples where a neighbouring run, scanned, shares them.
 		// A NaN stops the scan (reported below).
 		auto scan = [&](int g) {
 			scanned[g] = 1;
-			scratch.scannedRuns.push_back(g);
+			scannedRuns[scannedCount++] = g;
 			int first, last;
 			runSamples(g, first, last);
 			int end = std::min(last, n - 1); // (sample n is sample 0: done apart below)
@@ -440,13 +447,15 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			for (int k = first; k <= end; ++k)
 				inA[k] = ToWorld(walk.bInA, samples->point[k]);
 			if (end >= first)
-				a.Levels(inA.data() + first, end - first + 1, value.data() + first);
+				a.Levels(inA + first, end - first + 1, value + first);
+			bool nan = false; // (one test after the loop, not a branch a sample)
 			for (int k = first; k <= end; ++k)
 			{
 				stamp[k] = generation;
 				lowest = std::min(lowest, value[k]);
-				ok = ok && !std::isnan(value[k]);
+				nan |= std::isnan(value[k]);
 			}
+			ok = ok && !nan;
 			if (last == n && ok && !evaluated(0))
 			{
 				ok = evaluate(0);
@@ -456,17 +465,17 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		int best = 0, bestGroup = -1;
 		if (grouped)
 		{
-			bestGroup = int(std::min_element(groupBound.begin(), groupBound.end()) - groupBound.begin());
+			bestGroup = int(std::min_element(groupBound, groupBound + groups) - groupBound);
 			boundRuns(bestGroup);
 			int first, last;
 			groupRuns(bestGroup, first, last);
-			best = int(std::min_element(bound.begin() + first, bound.begin() + last) - bound.begin());
+			best = int(std::min_element(bound + first, bound + last) - bound);
 		}
 		else
-			best = int(std::min_element(bound.begin(), bound.end()) - bound.begin());
+			best = int(std::min_element(bound, bound + runs) - bound);
 		scan(best);
-		std::vector<std::pair<double, int>>& order = scratch.order;
-		order.clear();
+		std::pair<double, int>* const order = scratch.order.data();
+		int orderCount = 0;
 		if (grouped)
 		{
 			for (int G = 0; G < groups; ++G)
@@ -479,18 +488,19 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				groupRuns(G, first, last);
 				for (int g = first; g < last; ++g)
 					if (g != best && bound[g] <= lowest)
-						order.emplace_back(bound[g], g);
+						order[orderCount++] = {bound[g], g};
 			}
 		}
 		else
 		{
 			for (int g = 0; g < runs; ++g)
 				if (g != best && bound[g] <= lowest)
-					order.emplace_back(bound[g], g);
+					order[orderCount++] = {bound[g], g};
 		}
-		std::sort(order.begin(), order.end());
-		for (const auto& [runBound, g] : order)
+		std::sort(order, order + orderCount);
+		for (int i = 0; i < orderCount; ++i)
 		{
+			const auto [runBound, g] = order[i];
 			if (runBound > lowest || !ok)
 				break;
 			scan(g);
@@ -500,17 +510,17 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	{
 		for (int k = 0; k < n && ok; ++k)
 			ok = evaluate(k);
-		scanned.assign(runs, 1);
+		std::fill(scanned, scanned + runs, char(1));
 	}
 	// Local minima of the cyclic sequence over the scanned runs, lowest first. At the edge of a
 	// skipped run the neighbour is evaluated first, so that the edge is a minimum only if it is
 	// one. Each scanned sample is visited once: a run's last sample belongs to the next run when
 	// that one was scanned too.
-	std::vector<int>& minima = scratch.minima;
-	minima.clear();
+	int* const minima = scratch.minima.data();
+	int minimaCount = 0;
 	auto consider = [&](int k, int before, int after) {
 		if (value[k] <= value[before] && value[k] < value[after])
-			minima.push_back(k);
+			minima[minimaCount++] = k;
 	};
 	if (!bounded && ok && n >= 3)
 	{
@@ -520,10 +530,9 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			consider(k, k - 1, k + 1);
 		consider(n - 1, n - 2, 0);
 	}
-	std::vector<int>& scannedRuns = scratch.scannedRuns;
 	if (bounded)
-		std::sort(scannedRuns.begin(), scannedRuns.end());
-	for (size_t r = 0; r < scannedRuns.size() && ok && bounded; ++r)
+		std::sort(scannedRuns, scannedRuns + scannedCount);
+	for (int r = 0; r < scannedCount && ok && bounded; ++r)
 	{
 		const int g = scannedRuns[r];
 		int first, last;
@@ -553,24 +562,24 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		result.failure = "grid: a level value is NaN (check the shape functions)";
 		return result;
 	}
-	if (minima.empty())
+	if (minimaCount == 0)
 	{
 		int lowestSample = -1;
 		for (int k = 0; k < n; ++k)
 			if (evaluated(k) && (lowestSample < 0 || value[k] < value[lowestSample]))
 				lowestSample = k;
-		minima.push_back(lowestSample);
+		minima[minimaCount++] = lowestSample;
 	}
-	std::sort(minima.begin(), minima.end(), [&](int i, int j) { return value[i] < value[j] || (value[i] == value[j] && i < j); });
-	if (int(minima.size()) > options.gridCandidates)
-		minima.resize(std::max(1, options.gridCandidates));
+	std::sort(minima, minima + minimaCount, [&](int i, int j) { return value[i] < value[j] || (value[i] == value[j] && i < j); });
+	minimaCount = std::min(minimaCount, std::max(1, options.gridCandidates));
 
 	auto samplePoint = [&](int k) { return ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB); };
-	auto markSolved = [&](int i) { scratch.raySolved[i] = generation; };
+	auto markSolved = [&](int i) { raySolved[i] = generation; };
 	double bestValue = value[minima[0]];
 	Vec2 bestPoint = samplePoint(minima[0]);
-	for (int k : minima)
+	for (int m = 0; m < minimaCount; ++m)
 	{
+		const int k = minima[m];
 		double v = value[k];
 		Vec2 point = samplePoint(k);
 		if (options.gridRefine)
@@ -603,7 +612,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 					return true;
 			return false;
 		};
-		for (int r = 0, count = bounded ? int(scannedRuns.size()) : runs; r < count; ++r)
+		for (int r = 0, count = bounded ? scannedCount : runs; r < count; ++r)
 		{
 			const int g = bounded ? scannedRuns[r] : r;
 			if (bounded && !reaches(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]))
@@ -613,7 +622,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			for (int i = first; i < last; ++i)
 			{
 				const Vec2 p = inA[i], q = inA[i + 1 == n ? 0 : i + 1];
-				if (!MeetsCornerRay(a, p, q) || scratch.raySolved[i] == generation)
+				if (!MeetsCornerRay(a, p, q) || raySolved[i] == generation)
 					continue; // (no ray here, or solved by the refinement)
 				// (CornerRayCrossing tries every corner ray.)
 				if (!bounded || !(a.LevelLowerBound(0.5 * (p + q), 0.5 * Distance(p, q) + 2.0 * samples->maxDeviation) > bestValue))
