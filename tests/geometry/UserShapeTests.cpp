@@ -211,3 +211,20 @@ TEST_CASE("user shape: corner angles given as any angle are kept within one half
 	CHECK(square->NearCorner(-kPi + 1e-13, 1e-12));
 	CHECK(!square->NearCorner(0.5 * kPi, 1e-12));
 }
+
+TEST_CASE("shape: CentreLevel is the level at the body origin, computed once")
+{
+	// Built-in shapes are centred on their origin: level 0 there.
+	CHECK(MakeHeart(1.3)->CentreLevel() == 0.0);
+	CHECK(MakeSuperellipse(2.0, 1.0, 4.0, 8.0)->CentreLevel() == 0.0);
+	// An ellipse centred at c = (0.5, −0.2), axes 2 and 1.2 along x and y: at the origin
+	// q(0) = 0.5²/2² + 0.2²/1.2², by levelOf and by the root solve of G.
+	const double expected = 0.25 / 4.0 + 0.04 / 1.44;
+	for (const bool giveLevelOf : {true, false})
+	{
+		CAPTURE(giveLevelOf);
+		const auto user = MakeUserShape(OffsetEllipseDef(2.0, 1.2, 0.0, Vec2(0.5, -0.2), giveLevelOf));
+		CHECK(RelativeError(user->CentreLevel(), expected) < 1e-14);
+		CHECK(user->CentreLevel() == user->Level(Vec2(0.0, 0.0)));
+	}
+}

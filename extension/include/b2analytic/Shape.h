@@ -214,6 +214,9 @@ public:
 	virtual Box ComputeAABB(const Pose& pose) const;
 	/// Largest distance from the body origin to the surface.
 	double BoundingRadius() const { return m_boundingRadius; }
+	/// The level at the body origin, Level((0, 0)), computed once (Finalize): the grid method
+	/// asks at every contact whether a particle's centre lies inside it.
+	double CentreLevel() const { return m_centreLevel; }
 	/// Area, centroid and second moments at the own surface level.
 	const MassProperties& Mass() const { return m_mass; }
 
@@ -286,6 +289,7 @@ private:
 	double m_levelPower;
 	bool m_derivativesCheap = false;
 	double m_boundingRadius = 0.0;
+	double m_centreLevel = 0.0;
 	MassProperties m_mass;
 	std::vector<double> m_corners;
 	std::vector<Vec2> m_cornerDirections;

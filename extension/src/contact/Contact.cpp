@@ -3,6 +3,7 @@
 #include "b2analytic/SuperellipseShape.h"
 #include "b2analytic/SurfaceQueries.h"
 
+#include "contact/GridScale.h"
 #include "contact/PairFrame.h"
 #include "contact/ResultChecks.h"
 #include "contact/SolverCore.h"
@@ -496,8 +497,8 @@ GridSide ChooseGridSide(const Shape& a, const Pose& pa, const Shape& b, const Po
 	const double unitA = a.SurfaceLevel() > 0.0 ? a.SurfaceLevel() : 1.0;
 	const double unitB = b.SurfaceLevel() > 0.0 ? b.SurfaceLevel() : 1.0;
 	const double centreAInB = b.Level(ToBody(pb, pa.p)) / unitB, centreBInA = a.Level(ToBody(pa, pb.p)) / unitA;
-	const bool canA = centreAInB > 1.0 && a.Level(Vec2()) < a.SurfaceLevel();
-	const bool canB = centreBInA > 1.0 && b.Level(Vec2()) < b.SurfaceLevel();
+	const bool canA = centreAInB > 1.0 && a.CentreLevel() < a.SurfaceLevel();
+	const bool canB = centreBInA > 1.0 && b.CentreLevel() < b.SurfaceLevel();
 	// The side that samples the smaller particle, where one is more than twice the other: the
 	// samples (256 of them) must be dense against the rescaled particle, or the refinement can
 	// miss a dip in its level narrower than their spacing (a heart 1e-4 the size of the other,
@@ -528,25 +529,24 @@ ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const 
 	// centre lies outside the other, one side decides (ChooseGridSide) at about half the cost of
 	// both (0.56 for two hearts; 0.45 for a heart and a superellipse, the superellipse rescaled).
 	// Each side's solve and contact (seen from A), made at most once.
-	// (The rescaled particle's body gradient at its point is taken once, for the normal and the
-	// one-side test: computing it twice more was 1.7 % of a heart contact.)
+	// (The rescaled particle's body gradient at its point is taken once, by the solve, for its
+	// normal, the contact's and the one-side test: computing it twice more was 1.7 % of a heart
+	// contact, and taking it again after the solve one more evaluation of its derivatives.)
 	LevelResult ab, ba;
 	ContactResult cab, cba;
 	Vec2 gab, gba;
 	auto solveAB = [&] {
-		ab = SolveGridScale(a, pa, b, pb, options);
+		ab = SolveGridScale(a, pa, b, pb, options, std::numeric_limits<double>::quiet_NaN(), &gab);
 		if (ab.Ok())
 		{
-			gab = a.Gradient(ToBody(pa, ab.point));
 			cab = ContactFromLevelGiven(a, pa, b, pb, ab, ab.level <= a.SurfaceLevel(), true, &gab);
 		}
 		return ab.Ok();
 	};
 	auto solveBA = [&] {
-		ba = SolveGridScale(b, pb, a, pa, options);
+		ba = SolveGridScale(b, pb, a, pa, options, std::numeric_limits<double>::quiet_NaN(), &gba);
 		if (ba.Ok())
 		{
-			gba = b.Gradient(ToBody(pb, ba.point));
 			cba = FlipContact(ContactFromLevelGiven(b, pb, a, pa, ba, ba.level <= b.SurfaceLevel(), true, &gba));
 		}
 		return ba.Ok();

@@ -1,6 +1,7 @@
 // b2analytic: the grid method (paper section 3) with local refinement, and its common level.
 #include "b2analytic/CommonLevel.h"
 
+#include "contact/GridScale.h"
 #include "contact/LevelAlongLine.h"
 #include "contact/PairFrame.h"
 #include "numerics/RootFinding.h"
@@ -325,6 +326,12 @@ struct GridScratch
 LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
                            double levelB)
 {
+	return SolveGridScale(a, pa, b, pb, options, levelB, nullptr);
+}
+
+LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                           double levelB, Vec2* bodyGradientA)
+{
 	LevelResult result;
 	result.method = SolveMethod::grid;
 	const double LB = std::isnan(levelB) ? b.SurfaceLevel() : levelB;
@@ -636,7 +643,10 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		return result;
 	}
 	const Vec2 X = ToWorld(pb, bestPoint);
-	Vec2 normal = Rotate(pa.q, a.Gradient(ToBody(pa, X)));
+	const Vec2 gradientA = a.Gradient(ToBody(pa, X));
+	if (bodyGradientA)
+		*bodyGradientA = gradientA;
+	Vec2 normal = Rotate(pa.q, gradientA);
 	if (!(LengthSquared(normal) > 0.0) || !IsFinite(normal))
 		normal = -Rotate(pb.q, b.Gradient(ToBody(pb, X))); // A's centre on B's surface: use B's normal
 	result.status = SolveStatus::converged;
@@ -675,7 +685,7 @@ LevelResult SolveCommonLevelGrid(const Shape& a, const Pose& pa, const Shape& b,
 	// G(C) is the smallest level of A over the solid B_C: when A's centre lies inside B_C that is
 	// A's level at its centre, and only otherwise the minimum over B_C's surface. So defined, G
 	// never increases with C (the surface minimum alone would, once B_C swallows A's centre).
-	const double centreLevelA = a.Level(Vec2()) / unitA;
+	const double centreLevelA = a.CentreLevel() / unitA;
 	auto h = [&](double C) {
 		if (b.Level(ToBody(pb, pa.p)) <= C * unitB)
 		{

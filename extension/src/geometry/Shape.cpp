@@ -422,6 +422,7 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 void Shape::Finalize(double boundingRadius, const MassProperties* mass)
 {
 	const double L = m_surfaceLevel;
+	m_centreLevel = Level(Vec2());
 	m_cornerPoints.clear();
 	for (const Vec2 u : m_cornerDirections)
 		m_cornerPoints.push_back(RadiusAt(u, L) * u);
