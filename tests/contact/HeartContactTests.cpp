@@ -22,6 +22,7 @@
 #include "TestSupport.h"
 #include "ContactChecks.h"
 #include "ContactReference.h"
+#include "contact/GridScale.h"
 
 #include <map>
 #include <tuple>
@@ -152,6 +153,19 @@ TEST_CASE("hearts: SolveGridScale (and SolveScaleA) match a 200000-sample brute-
 			if (want.secondValue - want.value > 1e-6L * std::max(std::fabs(want.value), 1.0L))
 				CHECK(double(ref::Dist(r.point, want.point)) <= 1e-7 * p.b.shape->BoundingRadius());
 		}
+		// The internal overload that hands back A's body gradient at the point (for the grid's
+		// contact): the same answer, and the gradient A's own there, the normal its direction.
+		Vec2 gradient(0.0, 0.0);
+		const LevelResult plain = SolveGridScale(*p.a.shape, p.a.pose, *p.b.shape, p.b.pose);
+		const LevelResult handing = SolveGridScale(*p.a.shape, p.a.pose, *p.b.shape, p.b.pose, SolverOptions{},
+		                                           std::numeric_limits<double>::quiet_NaN(), &gradient);
+		CHECK(handing.level == plain.level);
+		CHECK(handing.point.x == plain.point.x);
+		CHECK(handing.point.y == plain.point.y);
+		const Vec2 own = p.a.shape->Gradient(ToBody(p.a.pose, handing.point));
+		CHECK(gradient.x == own.x);
+		CHECK(gradient.y == own.y);
+		CHECK(Length(Normalize(Rotate(p.a.pose.q, gradient)) - handing.normal) <= 1e-15);
 		// Newton refuses a heart, with a reason.
 		const LevelResult newton = SolveScaleA(*p.a.shape, p.a.pose, *p.b.shape, p.b.pose, MethodChoice::newton);
 		CHECK_FALSE(newton.Ok());
