@@ -589,6 +589,21 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		const int k = minima[m];
 		double v = value[k];
 		Vec2 point = samplePoint(k);
+		if (options.gridRefine && m > 0 && bounded)
+		{
+			// A later candidate whose arc between its neighbours A's level cannot reach below the
+			// best level refined so far is not refined: the discs of its two sample segments
+			// (the run discs' rule: half the chord and twice the curve's deviation from it) bound
+			// everything the refinement could find there.
+			const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
+			const double margin = 2.0 * samples->maxDeviation;
+			const Vec2 centres[2] = {0.5 * (inA[before] + inA[k]), 0.5 * (inA[k] + inA[after])};
+			const double radii[2] = {0.5 * Distance(inA[before], inA[k]) + margin, 0.5 * Distance(inA[k], inA[after]) + margin};
+			double bounds[2];
+			a.LevelLowerBounds(centres, radii, 2, bounds);
+			if (bounds[0] > bestValue && bounds[1] > bestValue)
+				continue;
+		}
 		if (options.gridRefine)
 		{
 			// (The neighbours of a local minimum of the samples were evaluated; those of the
