@@ -582,6 +582,11 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 
 	auto samplePoint = [&](int k) { return ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB); };
 	auto markSolved = [&](int i) { raySolved[i] = generation; };
+	// The disc holding B's curve between two consecutive samples p and q (A's frame), by the run
+	// discs' rule: half the chord and twice the curve's measured deviation from it. A's lower
+	// bound over it rules the arc out (the later candidates below, the corner-ray pass after).
+	const double deviationMargin = 2.0 * samples->maxDeviation;
+	auto segmentRadius = [&](Vec2 p, Vec2 q) { return 0.5 * Distance(p, q) + deviationMargin; };
 	double bestValue = value[minima[0]];
 	Vec2 bestPoint = samplePoint(minima[0]);
 	for (int m = 0; m < minimaCount; ++m)
@@ -589,26 +594,24 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		const int k = minima[m];
 		double v = value[k];
 		Vec2 point = samplePoint(k);
-		if (options.gridRefine && m > 0 && bounded)
-		{
-			// A later candidate whose arc between its neighbours A's level cannot reach below the
-			// best level refined so far is not refined: the discs of its two sample segments
-			// (the run discs' rule: half the chord and twice the curve's deviation from it) bound
-			// everything the refinement could find there.
-			const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
-			const double margin = 2.0 * samples->maxDeviation;
-			const Vec2 centres[2] = {0.5 * (inA[before] + inA[k]), 0.5 * (inA[k] + inA[after])};
-			const double radii[2] = {0.5 * Distance(inA[before], inA[k]) + margin, 0.5 * Distance(inA[k], inA[after]) + margin};
-			double bounds[2];
-			a.LevelLowerBounds(centres, radii, 2, bounds);
-			if (bounds[0] > bestValue && bounds[1] > bestValue)
-				continue;
-		}
 		if (options.gridRefine)
 		{
 			// (The neighbours of a local minimum of the samples were evaluated; those of the
-			// lowest sample, taken when no sample is one, need not have been: no parabola then.)
+			// lowest sample, taken when no sample is one, need not have been: no parabola then.
+			// That sample is the only candidate, so the later ones all have theirs.)
 			const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
+			if (m > 0 && bounded)
+			{
+				// A later candidate whose arc between its neighbours A's level cannot reach below
+				// the best level refined so far is not refined: the discs of its two sample
+				// segments bound everything the refinement could find there.
+				const Vec2 centres[2] = {0.5 * (inA[before] + inA[k]), 0.5 * (inA[k] + inA[after])};
+				const double radii[2] = {segmentRadius(inA[before], inA[k]), segmentRadius(inA[k], inA[after])};
+				double bounds[2];
+				a.LevelLowerBounds(centres, radii, 2, bounds);
+				if (bounds[0] > bestValue && bounds[1] > bestValue)
+					continue;
+			}
 			const double nan = std::numeric_limits<double>::quiet_NaN();
 			RefineCandidate(walk, *samples, k, samplePoint, markSolved, evaluated(before) ? value[before] : nan,
 			                evaluated(after) ? value[after] : nan, v, point);
@@ -647,7 +650,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				if (!MeetsCornerRay(a, p, q) || raySolved[i] == generation)
 					continue; // (no ray here, or solved by the refinement)
 				// (CornerRayCrossing tries every corner ray.)
-				if (!bounded || !(a.LevelLowerBound(0.5 * (p + q), 0.5 * Distance(p, q) + 2.0 * samples->maxDeviation) > bestValue))
+				if (!bounded || !(a.LevelLowerBound(0.5 * (p + q), segmentRadius(p, q)) > bestValue))
 					CornerRayCrossing(walk, p, q, bestValue, bestPoint);
 			}
 		}
