@@ -1,4 +1,4 @@
-// RootOf, CubeRoot and RootGuess (numerics/Powers.h) against long-double references.
+// RootOf, CubeRoot, CubeRootWithInverse and RootGuess (numerics/Powers.h) against long-double references.
 #include <doctest/doctest.h>
 
 #include "TestSupport.h"
@@ -38,6 +38,43 @@ TEST_CASE("powers: CubeRoot is within 0.51 ulp of the exact cube root from 1e-29
 		worst = std::max(worst, Ulps(CubeRoot(r * r * r), cbrtl((long double)(r * r * r))));
 	CAPTURE(worst);
 	CHECK(worst <= 0.51); // all but the last rounding exact to about 1e-18
+}
+
+TEST_CASE("powers: CubeRootWithInverse gives CubeRoot and the inverse cube root within 2 ulp, over the whole range")
+{
+	Random rng(13);
+	double worst = 0.0;
+	auto check = [&](double x) {
+		double inverse = 0.0;
+		const double root = CubeRootWithInverse(x, inverse);
+		CAPTURE(x);
+		REQUIRE(root == CubeRoot(x));
+		worst = std::max(worst, Ulps(inverse, 1.0L / cbrtl((long double)x)));
+	};
+	for (int k = 0; k < 200000; ++k)
+		check(std::exp(rng.Uniform(-667.0, 667.0)));
+	// Every cell's ends (the widest |d|) for the three residues of the exponent, and exact cubes.
+	for (int e : {-3, -2, -1, 0, 1, 2})
+		for (int i = 0; i < kCubeRootCells; ++i)
+		{
+			check(std::ldexp(1.0 + double(i) / kCubeRootCells, e));
+			check(std::nextafter(std::ldexp(1.0 + double(i + 1) / kCubeRootCells, e), 0.0));
+		}
+	for (double r : {1.0, 2.0, 3.0, 10.0, 0.5, 1e-90, 7e90})
+		check(r * r * r);
+	CAPTURE(worst);
+	CHECK(worst <= 2.0); // (1/c³ rounded in the table, c²·(1/c³), and the series' sum: 1.63 measured)
+	CHECK(worst >= 0.5); // (not correctly rounded)
+	// Outside the table's range: 1/CubeRoot; zero's inverse is infinite.
+	for (double x : {1e-300, 1e300, std::numeric_limits<double>::max()})
+	{
+		double inverse = 0.0;
+		CHECK(CubeRootWithInverse(x, inverse) == CubeRoot(x));
+		CHECK(inverse == 1.0 / CubeRoot(x));
+	}
+	double inverse = 0.0;
+	CHECK(CubeRootWithInverse(0.0, inverse) == 0.0);
+	CHECK(inverse == std::numeric_limits<double>::infinity());
 }
 
 TEST_CASE("powers: RootGuess is within 6.2 % of the k-th root for 0 < x <= 1, and exact where it must be")

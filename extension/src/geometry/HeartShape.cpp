@@ -78,9 +78,11 @@ LevelDerivatives HeartShape::Derivatives(Vec2 x) const
 	// α(x, y) = x² + y² − |x|^{2/3} y:
 	//   ∂x = 2x − (2/3) sgn(x) |x|^{−1/3} y,   ∂y = 2y − |x|^{2/3},
 	//   ∂xx = 2 + (2/9) |x|^{−4/3} y,  ∂xy = −(2/3) sgn(x) |x|^{−1/3},  ∂yy = 2.
+	// (|x|^{−1/3} from the cube root's table, with no division: CubeRootWithInverse.)
 	LevelDerivatives d;
 	const double ax = std::fabs(x.x);
-	const double c = CubeRoot(ax); // |x|^{1/3}
+	double ic;                                    // |x|^{−1/3}
+	const double c = CubeRootWithInverse(ax, ic); // |x|^{1/3}
 	d.value = x.x * x.x + x.y * x.y - c * c * x.y;
 	d.hessian.yy = 2.0;
 	d.gradient.y = 2.0 * x.y - c * c;
@@ -91,10 +93,10 @@ LevelDerivatives HeartShape::Derivatives(Vec2 x) const
 		d.hessian.xy = 0.0;
 		return d;
 	}
-	const double sgn = x.x > 0.0 ? 1.0 : -1.0;
-	d.gradient.x = 2.0 * x.x - (2.0 / 3.0) * sgn / c * x.y;
-	d.hessian.xx = 2.0 + (2.0 / 9.0) * x.y / (c * ax);
-	d.hessian.xy = -(2.0 / 3.0) * sgn / c;
+	const double sic = x.x > 0.0 ? ic : -ic; // sgn(x) |x|^{−1/3}
+	d.gradient.x = 2.0 * x.x - ((2.0 / 3.0) * sic) * x.y;
+	d.hessian.xx = 2.0 + ((2.0 / 9.0) * x.y) * ((ic * ic) * (ic * ic));
+	d.hessian.xy = -(2.0 / 3.0) * sic;
 	return d;
 }
 
