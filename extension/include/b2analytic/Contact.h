@@ -28,7 +28,8 @@ ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, con
 /// inward unit normals at the point (they agree at a tangency); where the point is a corner of
 /// one shape (a heart's tip) the other's normal; and where both normals point the same way (one
 /// centre inside the other) B's inward normal, with `pointOnB` saying the point lies on B's
-/// surface (the grid method). pointA is A's extreme point along the normal on the line through
+/// surface (the grid method; `level.level` is then A's level at the point, as
+/// SolveGridScale gives it). pointA is A's extreme point along the normal on the line through
 /// the point, pointB is B's extreme point against it (or, where the line misses a far-away
 /// particle, the surface point towards the level point), and the separation is measured along
 /// the normal between them. `touching` is the level solve's verdict; where rounding makes the

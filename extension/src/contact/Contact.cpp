@@ -210,13 +210,13 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 	// line may cross it more than once (a heart's lobes around a particle in its notch): there
 	// the crossing nearest X counts, leaving the shape along the direction when X is inside it,
 	// entering it behind X when X is outside.
-	auto extreme = [&](const Shape& s, const Pose& ps, Vec2 dir, const Vec2* bodyGradient) -> Vec2 {
+	auto extreme = [&](const Shape& s, const Pose& ps, Vec2 dir, const Vec2* bodyGradient, const double* known) -> Vec2 {
 		// A point on the surface to 1e-10 of the level (the grid's points are) is its own
 		// crossing; at a corner, where the level grows like |x|^{2/3} (a heart's tip), rounding
 		// of the point's coordinates moves the level by up to 1e-6.
 		const double own = s.SurfaceLevel();
 		const Vec2 x = ToBody(ps, X);
-		const double level = s.Level(x);
+		const double level = known ? *known : s.Level(x);
 		const double onSurface = AtCorner(s, x) ? 1e-6 : 1e-10;
 		if (std::fabs(level - own) <= onSurface * std::max(std::fabs(own), 1.0))
 			return X;
@@ -253,8 +253,9 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 		}
 		return RadialPoint(s, ps, X); // the line misses a far-away particle
 	};
-	c.pointA = extreme(a, pa, n, gradientA);
-	c.pointB = extreme(b, pb, -n, nullptr);
+	// (With the point on B's surface, the level solved for is A's own there: not evaluated again.)
+	c.pointA = extreme(a, pa, n, gradientA, pointOnB ? &level.level : nullptr);
+	c.pointB = extreme(b, pb, -n, nullptr, nullptr);
 	SetSeparation(c, touching);
 	return c;
 }
