@@ -29,6 +29,8 @@ public:
 	double LevelLowerBound(Vec2 centre, double radius) const override;
 	/// LevelLowerBound of two discs at a time (SSE2 on x86-64), each LevelLowerBound's bit for bit.
 	void LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const override;
+	/// Taylor's bound about the disc's centre, off the axis (|cx| ≥ 2ρ); −∞ elsewhere.
+	double TightLevelLowerBound(Vec2 centre, double radius) const override;
 	/// See Shape::LevelUpperBound.
 	double LevelUpperBound(Vec2 centre, double radius) const override;
 

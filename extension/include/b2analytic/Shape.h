@@ -192,6 +192,16 @@ public:
 	/// call: the grid method bounds its groups and runs of samples together. The default calls
 	/// LevelLowerBound; the heart evaluates two discs at a time.
 	virtual void LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const;
+	/// A second lower bound of the level over the disc, tighter on small discs and costlier than
+	/// LevelLowerBound's: the grid method's last look at a run of samples that LevelLowerBound
+	/// did not rule out, before it evaluates the run. The default, −∞, means none (the heart's
+	/// is Taylor's, about the disc's centre).
+	virtual double TightLevelLowerBound(Vec2 centre, double radius) const
+	{
+		(void)centre;
+		(void)radius;
+		return -std::numeric_limits<double>::infinity();
+	}
 	/// An upper bound of the level over the disc |x − centre| ≤ radius (body frame), with which
 	/// a line search inside a non-convex particle steps over stretches that cannot leave it.
 	/// The default, +∞, means no bound: the search marches in steps finer than the samples.

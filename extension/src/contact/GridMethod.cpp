@@ -519,6 +519,9 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			const auto [runBound, g] = order[i];
 			if (runBound > lowest || !ok)
 				break;
+			// A last look with A's tighter bound (where it has one), before the run's samples.
+			if (a.TightLevelLowerBound(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]) > lowest)
+				continue;
 			scan(g);
 		}
 	}
