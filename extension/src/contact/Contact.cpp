@@ -158,12 +158,13 @@ bool ConvexLineExtreme(const Shape& s, const Pose& ps, Vec2 X, Vec2 dir, double 
 // When the two normals point the same way, one particle's centre lies inside the other and X is
 // B's surface point nearest A (pointOnB, the grid method): A leaves B fastest through that
 // point, so the normal is B's inward one there.
+// (`cornerA`, `cornerB`: whether X is a corner of A, of B; the caller has them.)
 Vec2 ContactNormal(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Vec2 X, bool pointOnB,
-                   const Vec2* gradientA)
+                   const Vec2* gradientA, bool cornerA, bool cornerB)
 {
 	const Vec2 xa = ToBody(pa, X), xb = ToBody(pb, X);
-	const Vec2 na = AtCorner(a, xa) ? Vec2() : Normalize(Rotate(pa.q, gradientA ? *gradientA : a.Gradient(xa)));
-	const Vec2 nb = AtCorner(b, xb) ? Vec2() : Normalize(Rotate(pb.q, b.Gradient(xb)));
+	const Vec2 na = cornerA ? Vec2() : Normalize(Rotate(pa.q, gradientA ? *gradientA : a.Gradient(xa)));
+	const Vec2 nb = cornerB ? Vec2() : Normalize(Rotate(pb.q, b.Gradient(xb)));
 	const bool hasA = LengthSquared(na) > 0.0, hasB = LengthSquared(nb) > 0.0;
 	Vec2 n;
 	if (hasA && hasB)
@@ -201,7 +202,11 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 	// disturbs less (at the root they are opposed: the point minimises (1 − s)λA + sλB), from
 	// residuals computed in each body frame: re-deriving it from the double point's gradient
 	// would lose up to 1e-7 rad on 1000:1 needles.
-	c.normal = level.method == SolveMethod::ellipsePair ? level.normal : ContactNormal(a, pa, b, pb, X, pointOnB, gradientA);
+	// Whether X is a corner of either shape, for the normal and for each point's search (found
+	// once each: four times, as it was, was 1 % of a heart contact's instructions).
+	const bool cornerA = AtCorner(a, ToBody(pa, X)), cornerB = AtCorner(b, ToBody(pb, X));
+	c.normal = level.method == SolveMethod::ellipsePair ? level.normal
+	                                                    : ContactNormal(a, pa, b, pb, X, pointOnB, gradientA, cornerA, cornerB);
 	const Vec2 n = c.normal;
 
 	// The points: for a convex shape, where the line through X along n leaves A last (A's
@@ -210,14 +215,15 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 	// line may cross it more than once (a heart's lobes around a particle in its notch): there
 	// the crossing nearest X counts, leaving the shape along the direction when X is inside it,
 	// entering it behind X when X is outside.
-	auto extreme = [&](const Shape& s, const Pose& ps, Vec2 dir, const Vec2* bodyGradient, const double* known) -> Vec2 {
+	auto extreme = [&](const Shape& s, const Pose& ps, Vec2 dir, const Vec2* bodyGradient, const double* known,
+	                   bool atCorner) -> Vec2 {
 		// A point on the surface to 1e-10 of the level (the grid's points are) is its own
 		// crossing; at a corner, where the level grows like |x|^{2/3} (a heart's tip), rounding
 		// of the point's coordinates moves the level by up to 1e-6.
 		const double own = s.SurfaceLevel();
 		const Vec2 x = ToBody(ps, X);
 		const double level = known ? *known : s.Level(x);
-		const double onSurface = AtCorner(s, x) ? 1e-6 : 1e-10;
+		const double onSurface = atCorner ? 1e-6 : 1e-10;
 		if (std::fabs(level - own) <= onSurface * std::max(std::fabs(own), 1.0))
 			return X;
 		const bool inside = level <= own;
@@ -254,8 +260,8 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 		return RadialPoint(s, ps, X); // the line misses a far-away particle
 	};
 	// (With the point on B's surface, the level solved for is A's own there: not evaluated again.)
-	c.pointA = extreme(a, pa, n, gradientA, pointOnB ? &level.level : nullptr);
-	c.pointB = extreme(b, pb, -n, nullptr, nullptr);
+	c.pointA = extreme(a, pa, n, gradientA, pointOnB ? &level.level : nullptr, cornerA);
+	c.pointB = extreme(b, pb, -n, nullptr, nullptr, cornerB);
 	SetSeparation(c, touching);
 	return c;
 }
