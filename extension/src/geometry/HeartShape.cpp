@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 
 namespace b2a
@@ -49,8 +47,8 @@ void HeartShape::Levels(const Vec2* x, int count, double* out) const
 #if defined(B2A_SSE2_PAIRS)
 	// Two points at a time: the operations of HeartLevel and CubeRoot, in the same order, on
 	// the two lanes of SSE2 registers, so that each lane's value is Level's bit for bit (the
-	// divisions, three a cube root, are the level's cost, and the packed ones go through the
-	// divider two at a time). Pairs with a cube root outside CubeRoot's main range (0, NaN,
+	// cube root, a table cell and a polynomial, is the level's cost, and its arithmetic runs
+	// two lanes at a time). Pairs with a cube root outside CubeRoot's main range (0, NaN,
 	// infinities) take the scalar path. (Four AVX2 lanes, here and in LevelLowerBounds, bit for
 	// bit the same with gathered table cells, were 1.8 and 2.1 times as fast on runs alone but
 	// left a heart contact's time where it was, on 2026-12-05's EPYC: the contact waits on
@@ -167,31 +165,6 @@ void HeartShape::LevelLowerBounds(const Vec2* centres, const double* radii, int 
 		out[i] = LevelLowerBound(centres[i], radii[i]);
 }
 
-namespace
-{
-// x^{1/3} and x^{−1/3} to 2e-8, for a bound, from CubeRoot's table: x = 2^{3q}·m split as for
-// CubeRoot, m's cell c (c³ exact) and d = m/c³ − 1 (|d| ≤ 4e-3), then two terms of each series
-//   (1 + d)^{1/3} = 1 + d/3 − d²/9 + 5d³/81 − …,  (1 + d)^{−1/3} = 1 − d/3 + 2d²/9 − 14d³/81 + …
-// (what is left out: 4e-9 and 1.1e-8), 1/c = c²·(1/c³) from the cell and 2^{−q} from the bits of
-// 2^q. For x in CubeRoot's main range (1e-290 to 1e290).
-void RoughCubeRoots(double x, double& root, double& inverse)
-{
-	std::uint64_t bits;
-	std::memcpy(&bits, &x, sizeof bits);
-	const CubeRootSplit split = SplitForCubeRoot(bits);
-	std::uint64_t scaleBits;
-	std::memcpy(&scaleBits, &split.scale, sizeof scaleBits);
-	const std::uint64_t inverseScaleBits = (std::uint64_t(2046) << 52) - scaleBits; // 2^{−q}
-	double inverseScale;
-	std::memcpy(&inverseScale, &inverseScaleBits, sizeof inverseScale);
-	const double c = split.cell->c, inv = split.cell->inv;
-	const double d = (split.m - c * c * c) * inv;
-	const double reciprocal = (c * c) * inv; // 1/c
-	root = (c + c * (d * ((1.0 / 3.0) - d * (1.0 / 9.0)))) * split.scale;
-	inverse = (reciprocal - reciprocal * (d * ((1.0 / 3.0) - d * (2.0 / 9.0)))) * inverseScale;
-}
-} // namespace
-
 double HeartShape::TightLevelLowerBound(Vec2 centre, double radius) const
 {
 	// Taylor's theorem about the disc's centre c, with integral remainder:
@@ -211,15 +184,15 @@ double HeartShape::TightLevelLowerBound(Vec2 centre, double radius) const
 	// b2a_bench_pairs had still to evaluate after its first (ρ about a tenth of the heart), it
 	// rules out 0.73. (As the bound of every disc, in place of LevelLowerBound's, its cost, twice
 	// that one's, outweighed the runs it saved.)
-	// The cube roots by RoughCubeRoots (2e-8): k is taken 1e-6 high, and the answer lowered by
-	// 1e-6 of the sum of its terms' sizes (the gradient's by its components'), fifty times
-	// their error.
+	// The cube roots by RoughCubeRootWithInverse (2e-8): k is taken 1e-6 high, and the answer
+	// lowered by 1e-6 of the sum of its terms' sizes (the gradient's by its components'), fifty
+	// times their error.
 	const double ax = std::fabs(centre.x), cy = centre.y;
 	const double none = -std::numeric_limits<double>::infinity();
 	if (!(ax >= kCubeRootLowest && ax <= kCubeRootHighest))
 		return none;
-	double root, inverse;
-	RoughCubeRoots(ax, root, inverse);
+	double inverse;
+	const double root = RoughCubeRootWithInverse(ax, inverse);
 	const double t = radius * ((inverse * inverse) * inverse); // ρ/|cx|
 	if (!(t <= 0.5))
 		return none;

@@ -137,6 +137,17 @@ inline double CubeRoot(double x)
 	return std::copysign((c + c * delta) * scale, x);
 }
 
+/// 2^{−q} for CubeRoot's split |x| = 2^{3q}·m, from the bits of its 2^q: the scale of x^{−1/3}.
+inline double InverseCubeRootScale(const CubeRootSplit& split)
+{
+	std::uint64_t scaleBits;
+	std::memcpy(&scaleBits, &split.scale, sizeof scaleBits);
+	const std::uint64_t inverseBits = (std::uint64_t(2046) << 52) - scaleBits; // exponent −q
+	double inverseScale;
+	std::memcpy(&inverseScale, &inverseBits, sizeof inverseScale);
+	return inverseScale;
+}
+
 /// CubeRoot(x) for x > 0, and with it x^{−1/3} within 2 ulp (1.63 measured), with no division:
 /// from the same cell, 1/∛m = (1/c)·(1 + d)^{−1/3}, where 1/c = c²·(1/c³) (c² exact, 1/c³ the
 /// cell's) and
@@ -167,14 +178,26 @@ inline double CubeRootWithInverse(double x, double& inverse)
 	const double inverseMiddle = d * (35.0 / 243.0) - (14.0 / 81.0);
 	const double inverseHigh = d * (728.0 / 6561.0) - (91.0 / 729.0);
 	const double inverseDelta = inverseLow + d3 * (inverseMiddle + d2 * inverseHigh);
-	std::uint64_t scaleBits;
-	std::memcpy(&scaleBits, &scale, sizeof scaleBits);
-	const std::uint64_t inverseScaleBits = (std::uint64_t(2046) << 52) - scaleBits; // 2^{−q}
-	double inverseScale;
-	std::memcpy(&inverseScale, &inverseScaleBits, sizeof inverseScale);
 	const double reciprocal = (c * c) * inv; // 1/c
-	inverse = (reciprocal + reciprocal * inverseDelta) * inverseScale;
+	inverse = (reciprocal + reciprocal * inverseDelta) * InverseCubeRootScale(split);
 	return (c + c * delta) * scale;
+}
+
+/// x^{1/3}, and x^{−1/3} into `inverse`, each within 2e-8, for bounds: CubeRootWithInverse's
+/// cell with two terms of each series,
+///   (1 + d)^{1/3} = 1 + d/3 − d²/9 + 5d³/81 − …,  (1 + d)^{−1/3} = 1 − d/3 + 2d²/9 − 14d³/81 + …
+/// (what is left out: 4e-9 and 1.1e-8 at |d| ≤ 4e-3). For x in CubeRoot's main range (1e-290 to
+/// 1e290); the caller checks.
+inline double RoughCubeRootWithInverse(double x, double& inverse)
+{
+	std::uint64_t bits;
+	std::memcpy(&bits, &x, sizeof bits);
+	const CubeRootSplit split = SplitForCubeRoot(bits);
+	const double c = split.cell->c, inv = split.cell->inv;
+	const double d = (split.m - c * c * c) * inv;
+	const double reciprocal = (c * c) * inv; // 1/c
+	inverse = (reciprocal - reciprocal * (d * ((1.0 / 3.0) - d * (2.0 / 9.0)))) * InverseCubeRootScale(split);
+	return (c + c * (d * ((1.0 / 3.0) - d * (1.0 / 9.0)))) * split.scale;
 }
 
 /// x^{1/k} for 0 ≤ x ≤ 1 and an integer k ≥ 2, within 6.2 %, with no pow, exp or log: for a
