@@ -37,6 +37,22 @@ void DiscLevelRange(Level&& level, Vec2 centre, double radius, double& lowest, d
 		}
 }
 
+/// The smallest of level(x) over an 81 × 81 lattice covering the box, its edges included: the
+/// reference of the box bounds' tests.
+template <class Level>
+double BoxLevelLowest(Level&& level, const OrientedBox& box)
+{
+	const Vec2 across(-box.axis.y, box.axis.x);
+	double lowest = std::numeric_limits<double>::infinity();
+	for (int i = 0; i <= 80; ++i)
+		for (int j = 0; j <= 80; ++j)
+		{
+			const double s = box.halfLength * (i / 40.0 - 1.0), r = box.halfWidth * (j / 40.0 - 1.0);
+			lowest = std::min(lowest, double(level(box.centre + s * box.axis + r * across)));
+		}
+	return lowest;
+}
+
 /// |x/a|^n + |y/b|^m, or its ζ-form (|x/a|^{2ζ} + |y/b|^{2ζ})^{1/ζ} when zeta > 0.
 inline long double SuperellipseLevelRef(Vec2 p, double a, double b, double n, double m, double zeta = 0.0)
 {

@@ -29,8 +29,9 @@ public:
 	double LevelLowerBound(Vec2 centre, double radius) const override;
 	/// LevelLowerBound of two discs at a time (SSE2 on x86-64), each LevelLowerBound's bit for bit.
 	void LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const override;
-	/// Taylor's bound about the disc's centre, off the axis (|cx| ≥ 2ρ); −∞ elsewhere.
-	double TightLevelLowerBound(Vec2 centre, double radius) const override;
+	/// Taylor's bound about the box's centre, off the axis (|cx| at least twice the radius of
+	/// the disc around the box); −∞ elsewhere.
+	double TightLevelLowerBound(const OrientedBox& box) const override;
 	/// See Shape::LevelUpperBound.
 	double LevelUpperBound(Vec2 centre, double radius) const override;
 

@@ -177,6 +177,17 @@ struct Box
 	Vec2 upper; ///< upper-right corner
 };
 
+/// A rectangle of any orientation: `axis` (a unit vector) along its length, halfLength along
+/// it and halfWidth across it about `centre`. The grid method's runs of samples each lie in one
+/// aligned with their chord, a thin box where their disc is round.
+struct OrientedBox
+{
+	Vec2 centre;            ///< centre
+	Vec2 axis{1.0, 0.0};    ///< unit vector along the length
+	double halfLength = 0.0; ///< half the extent along `axis`
+	double halfWidth = 0.0;  ///< half the extent across it
+};
+
 /// π to double precision.
 inline constexpr double kPi = 3.14159265358979323846264338327950288;
 

@@ -86,6 +86,11 @@ struct SurfaceSamples
 	/// where a lower bound of A's level over its disc exceeds a level it has already found.
 	std::vector<Vec2> runCentre;
 	std::vector<double> runRadius; ///< radius of each run's disc
+	/// Boxes enclosing the runs, each aligned with its run's chord (first sample to last) and
+	/// holding the samples and, by the discs' rule, twice the curve's measured deviation from
+	/// them: a run's arc bends little over its length, so the box is thin where the disc is
+	/// round, and a bound over it need not cover the disc's far sides.
+	std::vector<OrientedBox> runBox;
 	/// Discs enclosing groups of runs: group G holds runs G·kGroupRuns … (G+1)·kGroupRuns − 1
 	/// (the last group may hold fewer) and its disc encloses theirs. The grid method bounds the
 	/// groups first and a run's own disc only where its group's bound does not rule it out.
@@ -192,14 +197,13 @@ public:
 	/// call: the grid method bounds its groups and runs of samples together. The default calls
 	/// LevelLowerBound; the heart evaluates two discs at a time.
 	virtual void LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const;
-	/// A second lower bound of the level over the disc, tighter on small discs and costlier than
-	/// LevelLowerBound's: the grid method's last look at a run of samples that LevelLowerBound
-	/// did not rule out, before it evaluates the run. The default, −∞, means none (the heart's
-	/// is Taylor's, about the disc's centre).
-	virtual double TightLevelLowerBound(Vec2 centre, double radius) const
+	/// A lower bound of the level over a box (body frame), tighter than LevelLowerBound's over
+	/// the disc around it and costlier: the grid method's last look at a run of samples, over
+	/// the run's box, that LevelLowerBound did not rule out over its disc, before it evaluates
+	/// the run. The default, −∞, means none (the heart's is Taylor's, about the box's centre).
+	virtual double TightLevelLowerBound(const OrientedBox& box) const
 	{
-		(void)centre;
-		(void)radius;
+		(void)box;
 		return -std::numeric_limits<double>::infinity();
 	}
 	/// An upper bound of the level over the disc |x − centre| ≤ radius (body frame), with which

@@ -519,8 +519,12 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			const auto [runBound, g] = order[i];
 			if (runBound > lowest || !ok)
 				break;
-			// A last look with A's tighter bound (where it has one), before the run's samples.
-			if (a.TightLevelLowerBound(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]) > lowest)
+			// A last look with A's tighter bound (where it has one) over the run's box, before
+			// the run's samples.
+			OrientedBox box = samples->runBox[g];
+			box.centre = ToWorld(walk.bInA, box.centre);
+			box.axis = Rotate(walk.bInA.q, box.axis);
+			if (a.TightLevelLowerBound(box) > lowest)
 				continue;
 			scan(g);
 		}

@@ -165,32 +165,36 @@ void HeartShape::LevelLowerBounds(const Vec2* centres, const double* radii, int 
 		out[i] = LevelLowerBound(centres[i], radii[i]);
 }
 
-double HeartShape::TightLevelLowerBound(Vec2 centre, double radius) const
+double HeartShape::TightLevelLowerBound(const OrientedBox& box) const
 {
-	// Taylor's theorem about the disc's centre c, with integral remainder:
+	// Taylor's theorem about the box's centre c, with integral remainder:
 	//   λ(c + d) ≥ λ(c) + ∇λ(c)·d + (m/2)|d|²,
-	// m a lower bound of the Hessian's least eigenvalue over the disc, which must keep off the
+	// m a lower bound of the Hessian's least eigenvalue over the box, which must keep off the
 	// axis, where λ is not smooth. With a = (2/9)|x|^{−4/3} y and e = (2/3)|x|^{−1/3} the
 	// Hessian is [[2 + a, ∓e], [∓e, 2]], whose least eigenvalue 2 + a/2 − √(a²/4 + e²) is at
-	// least 2 + min(a, 0) − e. Over the disc |x| ≥ |cx| − ρ and y ≥ cy − ρ, so with k an upper
-	// bound of (|cx| − ρ)^{−1/3}:
+	// least 2 + min(a, 0) − e. Over the disc of radius ρ = √(l² + w²) around the box (l, w its
+	// half-length and half-width) |x| ≥ |cx| − ρ and y ≥ cy − ρ, so with k an upper bound of
+	// (|cx| − ρ)^{−1/3}:
 	//   m = 2 + (2/9) min(cy − ρ, 0) k⁴ − (2/3) k.
 	// For t = ρ/|cx| ≤ 1/2, (1 − t)^{−1/3} lies below its chord 1 + 2(2^{1/3} − 1)t ≤ 1 + 0.52t
-	// (it is convex), so k = |cx|^{−1/3}(1 + 0.52t): one cube root, at the centre. Over
-	// |d| ≤ ρ, ∇λ·d + (m/2)|d|² ≥ −|g|s + (m/2)s² at s = |d|, least at s = ρ where |g| ≥ mρ
-	// (always for m ≤ 0) and at least −|g|ρ otherwise. Its slack grows like ρ², where that of
-	// LevelLowerBound's terms apart grows like ρ: on the test's discs (1e-4 to 0.3 of the heart)
-	// a fifteenth of it, and of the 3.25 runs of samples a heart–heart contact of
-	// b2a_bench_pairs had still to evaluate after its first (ρ about a tenth of the heart), it
-	// rules out 0.73. (As the bound of every disc, in place of LevelLowerBound's, its cost, twice
-	// that one's, outweighed the runs it saved.)
+	// (it is convex), so k = |cx|^{−1/3}(1 + 0.52t): one cube root, at the centre.
+	// The box is a product of two intervals, d = s·u + r·v (u along it, v across, |s| ≤ l,
+	// |r| ≤ w), and |d|² = s² + r², so the least of ∇λ·d + (m/2)|d|² is the sum of each
+	// interval's least of g s + (m/2) s²: −|g|l + (m/2)l² where |g| ≥ ml (always for m ≤ 0),
+	// and at least −|g|l otherwise. Along a run of samples near the least level the curve
+	// runs along A's level set, the gradient lies across the box, and the box's thinness
+	// counts: of the runs a heart–heart contact of b2a_bench_pairs had still to evaluate after
+	// its first, this rules out half again as many as the same bound over the run's disc.
 	// The cube roots by RoughCubeRootWithInverse (2e-8): k is taken 1e-6 high, and the answer
 	// lowered by 1e-6 of the sum of its terms' sizes (the gradient's by its components'), fifty
 	// times their error.
+	const Vec2 centre = box.centre;
 	const double ax = std::fabs(centre.x), cy = centre.y;
 	const double none = -std::numeric_limits<double>::infinity();
 	if (!(ax >= kCubeRootLowest && ax <= kCubeRootHighest))
 		return none;
+	const double l = box.halfLength, w = box.halfWidth;
+	const double radius = std::sqrt(l * l + w * w);
 	double inverse;
 	const double root = RoughCubeRootWithInverse(ax, inverse);
 	const double t = radius * ((inverse * inverse) * inverse); // ρ/|cx|
@@ -199,17 +203,17 @@ double HeartShape::TightLevelLowerBound(Vec2 centre, double radius) const
 	const double c2 = root * root; // |cx|^{2/3}
 	const double r2 = centre.x * centre.x + cy * cy;
 	const double bend = (2.0 / 3.0) * inverse * cy; // (2/3)|cx|^{−1/3} cy
-	const double gx = 2.0 * ax - bend;              // ±∂x
+	const double gx = 2.0 * centre.x - (centre.x > 0.0 ? bend : -bend); // ∂x
 	const double gy = 2.0 * cy - c2;
-	const double g = std::sqrt(gx * gx + gy * gy);
 	const double k = (inverse * (1.0 + 0.52 * t)) * (1.0 + 1e-6); // ≥ (|cx| − ρ)^{−1/3}
 	const double k2 = k * k, k4 = k2 * k2;
 	const double low = std::min(cy - radius, 0.0);
 	const double m = (2.0 + (2.0 / 9.0) * low * k4) - (2.0 / 3.0) * k;
-	if (!(std::fabs(m) <= 1e300 && g <= 1e300))
+	const double gu = std::fabs(gx * box.axis.x + gy * box.axis.y), gv = std::fabs(gy * box.axis.x - gx * box.axis.y);
+	if (!(std::fabs(m) <= 1e300 && gu <= 1e300 && gv <= 1e300))
 		return none;
-	const double mr = m * radius;
-	const double drop = (g >= mr ? 0.5 * mr * radius : 0.0) - g * radius;
+	const double ml = m * l, mw = m * w;
+	const double drop = ((gu >= ml ? 0.5 * ml * l : 0.0) - gu * l) + ((gv >= mw ? 0.5 * mw * w : 0.0) - gv * w);
 	const double gradientSize = (2.0 * ax + std::fabs(bend)) + (2.0 * std::fabs(cy) + c2);
 	const double curve = (1.0 / 9.0) * -low * k4 + (1.0 / 3.0) * k;
 	const double size = (r2 + c2 * std::fabs(cy)) + (gradientSize * radius + (radius * radius) * (1.0 + curve));
