@@ -330,6 +330,67 @@ TEST_CASE("heart: TightLevelLowerBound is below the level on the box, tighter th
 	CHECK(MakeSuperellipse(1.0, 0.5, 4.0, 4.0)->TightLevelLowerBound(box) == -std::numeric_limits<double>::infinity());
 }
 
+TEST_CASE("heart: CurvatureBounds holds the Hessian's eigenvalues over the disc, closely on small discs, and none near the axis")
+{
+	// Reference: the Hessian by central differences of the long-double level (HeartLevelRef,
+	// steps of 1e-4 of |x|: errors near 1e-8 of it), its eigenvalues over 10 rings of 24
+	// points covering the disc, and its centre. Discs of 1e-4 to 0.3 of the heart.
+	Random rng(37);
+	int applied = 0;
+	const std::shared_ptr<HeartShape> hearts[] = {MakeHeart(0.3), MakeHeart(1.0), MakeHeart(4.0)};
+	for (int i = 0; i < 900; ++i)
+	{
+		const HeartShape* h = hearts[i % 3].get();
+		const double alpha = h->SurfaceLevel(), R = h->BoundingRadius();
+		const Vec2 c(rng.Uniform(-1.5 * R, 1.5 * R), rng.Uniform(-1.5 * R, 1.5 * R));
+		const double r = rng.LogUniform(1e-4 * R, 0.3 * R);
+		double lowest = 0.0, highest = 0.0;
+		const bool has = h->CurvatureBounds(c, r, lowest, highest);
+		INFO("alpha ", alpha, ", disc (", c.x, ", ", c.y, ") of radius ", r);
+		if (std::fabs(c.x) < 2.0 * r)
+		{
+			CHECK_FALSE(has); // off the axis only
+			continue;
+		}
+		if (std::fabs(c.x) < 2.0 * r * (1.0 + 1e-6))
+			continue; // (ρ/|cx| at 1/2, within rounding of where it stops applying)
+		REQUIRE(has);
+		++applied;
+		double least = 1e300, most = -1e300;
+		for (int ring = 0; ring <= 10; ++ring)
+			for (int k = 0; k < (ring == 0 ? 1 : 24); ++k)
+			{
+				const double t = 2.0 * kPi * k / 24.0;
+				const Vec2 x = c + (r * ring / 10.0) * Vec2(std::cos(t), std::sin(t));
+				const long double e = 1e-4L * std::hypot(x.x, x.y);
+				auto L = [&](long double dx, long double dy) { return (long double)HeartLevelRef(Vec2(double(x.x + dx), double(x.y + dy))); };
+				const long double l0 = L(0, 0);
+				const long double xx = (L(e, 0) - 2 * l0 + L(-e, 0)) / (e * e), yy = (L(0, e) - 2 * l0 + L(0, -e)) / (e * e);
+				const long double xy = (L(e, e) - L(e, -e) - L(-e, e) + L(-e, -e)) / (4 * e * e);
+				const long double mid = 0.5L * (xx + yy), half = std::sqrt(0.25L * (xx - yy) * (xx - yy) + xy * xy);
+				least = std::min(least, double(mid - half));
+				most = std::max(most, double(mid + half));
+			}
+		const double tol = 1e-6 * (std::fabs(least) + std::fabs(most) + 1.0);
+		CHECK(lowest <= least + tol);
+		CHECK(highest >= most - tol);
+		// Small discs: the bounds are the eigenvalues' own bounds at the centre (2 + min(a, 0)
+		// − e and 2 + max(a, 0) + e, which differ from them by at most e) within the disc's
+		// spread of them.
+		if (r < 1e-3 * std::fabs(c.x))
+		{
+			const double a = (2.0 / 9.0) * c.y / std::pow(std::fabs(c.x), 4.0 / 3.0), e = (2.0 / 3.0) / std::cbrt(std::fabs(c.x));
+			CHECK(lowest >= least - e - 0.01 * (std::fabs(a) + e) - 1e-9);
+			CHECK(highest <= most + e + 0.01 * (std::fabs(a) + e) + 1e-9);
+		}
+	}
+	CAPTURE(applied);
+	CHECK(applied > 500); // (measured: 853 of the 900 discs)
+	// The default shape has none.
+	double lowest = 0.0, highest = 0.0;
+	CHECK_FALSE(MakeSuperellipse(1.0, 0.5, 4.0, 4.0)->CurvatureBounds(Vec2(1.0, 0.5), 0.1, lowest, highest));
+}
+
 TEST_CASE("heart: LevelLowerBounds, two discs at a time, is LevelLowerBound bit for bit, and the default's is too")
 {
 	// The grid bounds its groups and runs through LevelLowerBounds, which the heart evaluates in

@@ -32,6 +32,8 @@ public:
 	/// Taylor's bound about the box's centre, off the axis (|cx| at least twice the radius of
 	/// the disc around the box); −∞ elsewhere.
 	double TightLevelLowerBound(const OrientedBox& box) const override;
+	/// The Hessian's eigenvalues bounded over the disc, off the axis (|cx| ≥ 2ρ); false elsewhere.
+	bool CurvatureBounds(Vec2 centre, double radius, double& lowest, double& highest) const override;
 	/// See Shape::LevelUpperBound.
 	double LevelUpperBound(Vec2 centre, double radius) const override;
 

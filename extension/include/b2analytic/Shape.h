@@ -206,6 +206,20 @@ public:
 		(void)box;
 		return -std::numeric_limits<double>::infinity();
 	}
+	/// Bounds of the level's curvature over the disc |x − centre| ≤ radius (body frame): every
+	/// eigenvalue of the level's Hessian lies in [lowest, highest] there, so that along a line
+	/// through the disc the level's second derivative does too (times the direction's squared
+	/// length). A line search inside or toward a non-convex particle brackets its crossing by
+	/// the parabolas they give, where the level is convex over the stretch ahead. False where
+	/// the shape has none (the default) or the level is not smooth over the disc.
+	virtual bool CurvatureBounds(Vec2 centre, double radius, double& lowest, double& highest) const
+	{
+		(void)centre;
+		(void)radius;
+		lowest = -std::numeric_limits<double>::infinity();
+		highest = std::numeric_limits<double>::infinity();
+		return false;
+	}
 	/// An upper bound of the level over the disc |x − centre| ≤ radius (body frame), with which
 	/// a line search inside a non-convex particle steps over stretches that cannot leave it.
 	/// The default, +∞, means no bound: the search marches in steps finer than the samples.

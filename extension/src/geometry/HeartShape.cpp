@@ -34,6 +34,34 @@ namespace
 {
 // (r² − α)³ = x² y³  ⇔  α = r² − cbrt(x² y³), and (r² − α)³ is decreasing in α.
 inline double HeartLevel(Vec2 x) { return x.x * x.x + x.y * x.y - CubeRoot(x.x * x.x) * x.y; }
+
+// The Hessian [[2 + a, ∓e], [∓e, 2]] of the level off the axis, a = (2/9)|x|^{−4/3} y and
+// e = (2/3)|x|^{−1/3}, has eigenvalues 2 + a/2 ± √(a²/4 + e²), which lie within
+// 2 + min(a, 0) − e and 2 + max(a, 0) + e. Over the disc of radius ρ about c, |x| ≥ |cx| − ρ
+// and |y − cy| ≤ ρ, so with k an upper bound of (|cx| − ρ)^{−1/3} they lie within
+//   2 + (2/9) min(cy − ρ, 0) k⁴ − (2/3) k  and  2 + (2/9) max(cy + ρ, 0) k⁴ + (2/3) k.
+// For t = ρ/|cx| ≤ 1/2, (1 − t)^{−1/3} lies below its chord 1 + 2(2^{1/3} − 1)t ≤ 1 + 0.52t
+// (it is convex), so k = |cx|^{−1/3}(1 + 0.52t): one cube root, at the centre, by
+// RoughCubeRootWithInverse (2e-8), and k taken 1e-6 high, fifty times that.
+struct DiscCubeRoots
+{
+	double root;    // |cx|^{1/3}, within 2e-8
+	double inverse; // |cx|^{−1/3}, within 2e-8
+	double k;       // ≥ (|cx| − ρ)^{−1/3}
+};
+// False where the disc comes within 2ρ of the axis (or |cx| is outside the table's range).
+inline bool CubeRootsOverDisc(Vec2 centre, double radius, DiscCubeRoots& r)
+{
+	const double ax = std::fabs(centre.x);
+	if (!(ax >= kCubeRootLowest && ax <= kCubeRootHighest))
+		return false;
+	r.root = RoughCubeRootWithInverse(ax, r.inverse);
+	const double t = radius * ((r.inverse * r.inverse) * r.inverse); // ρ/|cx|
+	if (!(t <= 0.5))
+		return false;
+	r.k = (r.inverse * (1.0 + 0.52 * t)) * (1.0 + 1e-6);
+	return true;
+}
 } // namespace
 
 double HeartShape::Level(Vec2 x) const
@@ -170,14 +198,9 @@ double HeartShape::TightLevelLowerBound(const OrientedBox& box) const
 	// Taylor's theorem about the box's centre c, with integral remainder:
 	//   λ(c + d) ≥ λ(c) + ∇λ(c)·d + (m/2)|d|²,
 	// m a lower bound of the Hessian's least eigenvalue over the box, which must keep off the
-	// axis, where λ is not smooth. With a = (2/9)|x|^{−4/3} y and e = (2/3)|x|^{−1/3} the
-	// Hessian is [[2 + a, ∓e], [∓e, 2]], whose least eigenvalue 2 + a/2 − √(a²/4 + e²) is at
-	// least 2 + min(a, 0) − e. Over the disc of radius ρ = √(l² + w²) around the box (l, w its
-	// half-length and half-width) |x| ≥ |cx| − ρ and y ≥ cy − ρ, so with k an upper bound of
-	// (|cx| − ρ)^{−1/3}:
+	// axis, where λ is not smooth: CubeRootsOverDisc's, over the disc of radius
+	// ρ = √(l² + w²) around the box (l, w its half-length and half-width),
 	//   m = 2 + (2/9) min(cy − ρ, 0) k⁴ − (2/3) k.
-	// For t = ρ/|cx| ≤ 1/2, (1 − t)^{−1/3} lies below its chord 1 + 2(2^{1/3} − 1)t ≤ 1 + 0.52t
-	// (it is convex), so k = |cx|^{−1/3}(1 + 0.52t): one cube root, at the centre.
 	// The box is a product of two intervals, d = s·u + r·v (u along it, v across, |s| ≤ l,
 	// |r| ≤ w), and |d|² = s² + r², so the least of ∇λ·d + (m/2)|d|² is the sum of each
 	// interval's least of g s + (m/2) s²: −|g|l + (m/2)l² where |g| ≥ ml (always for m ≤ 0),
@@ -185,39 +208,52 @@ double HeartShape::TightLevelLowerBound(const OrientedBox& box) const
 	// runs along A's level set, the gradient lies across the box, and the box's thinness
 	// counts: of the runs a heart–heart contact of b2a_bench_pairs had still to evaluate after
 	// its first, this rules out half again as many as the same bound over the run's disc.
-	// The cube roots by RoughCubeRootWithInverse (2e-8): k is taken 1e-6 high, and the answer
-	// lowered by 1e-6 of the sum of its terms' sizes (the gradient's by its components'), fifty
-	// times their error.
+	// The cube roots within 2e-8 and k 1e-6 high (CubeRootsOverDisc): the answer is lowered by
+	// 1e-6 of the sum of its terms' sizes (the gradient's by its components').
 	const Vec2 centre = box.centre;
-	const double ax = std::fabs(centre.x), cy = centre.y;
-	const double none = -std::numeric_limits<double>::infinity();
-	if (!(ax >= kCubeRootLowest && ax <= kCubeRootHighest))
-		return none;
 	const double l = box.halfLength, w = box.halfWidth;
 	const double radius = std::sqrt(l * l + w * w);
-	double inverse;
-	const double root = RoughCubeRootWithInverse(ax, inverse);
-	const double t = radius * ((inverse * inverse) * inverse); // ρ/|cx|
-	if (!(t <= 0.5))
-		return none;
-	const double c2 = root * root; // |cx|^{2/3}
+	DiscCubeRoots roots;
+	if (!CubeRootsOverDisc(centre, radius, roots))
+		return -std::numeric_limits<double>::infinity();
+	const double ax = std::fabs(centre.x), cy = centre.y, inverse = roots.inverse, k = roots.k;
+	const double c2 = roots.root * roots.root; // |cx|^{2/3}
 	const double r2 = centre.x * centre.x + cy * cy;
 	const double bend = (2.0 / 3.0) * inverse * cy; // (2/3)|cx|^{−1/3} cy
 	const double gx = 2.0 * centre.x - (centre.x > 0.0 ? bend : -bend); // ∂x
 	const double gy = 2.0 * cy - c2;
-	const double k = (inverse * (1.0 + 0.52 * t)) * (1.0 + 1e-6); // ≥ (|cx| − ρ)^{−1/3}
 	const double k2 = k * k, k4 = k2 * k2;
 	const double low = std::min(cy - radius, 0.0);
 	const double m = (2.0 + (2.0 / 9.0) * low * k4) - (2.0 / 3.0) * k;
 	const double gu = std::fabs(gx * box.axis.x + gy * box.axis.y), gv = std::fabs(gy * box.axis.x - gx * box.axis.y);
 	if (!(std::fabs(m) <= 1e300 && gu <= 1e300 && gv <= 1e300))
-		return none;
+		return -std::numeric_limits<double>::infinity();
 	const double ml = m * l, mw = m * w;
 	const double drop = ((gu >= ml ? 0.5 * ml * l : 0.0) - gu * l) + ((gv >= mw ? 0.5 * mw * w : 0.0) - gv * w);
 	const double gradientSize = (2.0 * ax + std::fabs(bend)) + (2.0 * std::fabs(cy) + c2);
 	const double curve = (1.0 / 9.0) * -low * k4 + (1.0 / 3.0) * k;
 	const double size = (r2 + c2 * std::fabs(cy)) + (gradientSize * radius + (radius * radius) * (1.0 + curve));
 	return ((r2 - c2 * cy) + drop) - 1e-6 * size;
+}
+
+bool HeartShape::CurvatureBounds(Vec2 centre, double radius, double& lowest, double& highest) const
+{
+	// CubeRootsOverDisc's bounds; their sums lowered and raised by 1e-12 of their terms' sizes
+	// for rounding (k, 1e-6 high, already covers the cube root's error).
+	lowest = -std::numeric_limits<double>::infinity();
+	highest = std::numeric_limits<double>::infinity();
+	DiscCubeRoots roots;
+	if (!CubeRootsOverDisc(centre, radius, roots))
+		return false;
+	const double k = roots.k, k2 = k * k, k4 = k2 * k2;
+	const double down = (2.0 / 9.0) * std::min(centre.y - radius, 0.0) * k4, up = (2.0 / 9.0) * std::max(centre.y + radius, 0.0) * k4;
+	const double e = (2.0 / 3.0) * k;
+	const double size = 2.0 + (up - down) + e;
+	if (!(size <= 1e300))
+		return false;
+	lowest = ((2.0 + down) - e) - 1e-12 * size;
+	highest = ((2.0 + up) + e) + 1e-12 * size;
+	return true;
 }
 
 double HeartShape::LevelUpperBound(Vec2 centre, double radius) const
