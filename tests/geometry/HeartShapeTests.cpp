@@ -391,6 +391,16 @@ TEST_CASE("heart: CurvatureBounds holds the Hessian's eigenvalues over the disc,
 	CHECK_FALSE(MakeSuperellipse(1.0, 0.5, 4.0, 4.0)->CurvatureBounds(Vec2(1.0, 0.5), 0.1, lowest, highest));
 }
 
+TEST_CASE("heart: LevelSmoothOver is the discs off the axis")
+{
+	// α = x² + y² − |x|^{2/3} y is smooth wherever x ≠ 0 and has its kink on the axis.
+	const auto h = MakeHeart(1.0);
+	CHECK(h->LevelSmoothOver(Vec2(0.5, -0.3), 0.4));
+	CHECK_FALSE(h->LevelSmoothOver(Vec2(0.5, -0.3), 0.6));
+	CHECK_FALSE(h->LevelSmoothOver(Vec2(-0.01, -1.0), 0.02)); // the tip
+	CHECK(h->LevelSmoothOver(Vec2(-0.03, -1.0), 0.02));
+}
+
 TEST_CASE("heart: LevelLowerBounds, two discs at a time, is LevelLowerBound bit for bit, and the default's is too")
 {
 	// The grid bounds its groups and runs through LevelLowerBounds, which the heart evaluates in

@@ -600,3 +600,23 @@ TEST_CASE("superellipse: LevelLowerBound is below the level over the disc, tight
 	CHECK(user->LevelLowerBound(Vec2(0.5, 0.5), 0.1) == -std::numeric_limits<double>::infinity());
 	CHECK(user->LevelUpperBound(Vec2(0.5, 0.5), 0.1) == std::numeric_limits<double>::infinity());
 }
+
+TEST_CASE("superellipse: LevelSmoothOver excludes the axes where an exponent is not an even integer, and the zeta form's centre")
+{
+	// The level's terms |x/a|^n and |y/b|^m are polynomials for even integer exponents and have
+	// no third derivative where their coordinate vanishes otherwise; the ζ-form's f^{1/ζ} has
+	// none at f = 0, the centre. The grid refinement's early stop relies on this answer.
+	const auto even = MakeSuperellipse(2.0, 1.0, 4.0, 2.0);
+	CHECK(even->LevelSmoothOver(Vec2(0.0, 0.0), 0.5));
+	CHECK(even->LevelSmoothOver(Vec2(1.0, 0.01), 0.1));
+	const auto mixed = MakeSuperellipse(2.0, 1.0, 2.5, 4.0); // |x|^2.5: not at x = 0
+	CHECK_FALSE(mixed->LevelSmoothOver(Vec2(0.05, 0.9), 0.1));
+	CHECK(mixed->LevelSmoothOver(Vec2(0.15, 0.9), 0.1));
+	CHECK(mixed->LevelSmoothOver(Vec2(1.5, 0.0), 0.1)); // (y's exponent is even)
+	const auto odd = MakeSuperellipse(1.0, 1.0, 3.0, 3.0); // |x|³: no third derivative at 0
+	CHECK_FALSE(odd->LevelSmoothOver(Vec2(1.0, 0.05), 0.1));
+	CHECK(odd->LevelSmoothOver(Vec2(0.7, 0.7), 0.1));
+	const auto zeta = SuperellipseShape::FromZeta(1.0, 1.0, 1.0); // (x² + y²): f^{1/ζ} = f
+	CHECK_FALSE(zeta->LevelSmoothOver(Vec2(0.05, 0.0), 0.1));
+	CHECK(zeta->LevelSmoothOver(Vec2(1.0, 0.0), 0.1));
+}

@@ -3,6 +3,8 @@
 
 #include "b2analytic/Shape.h"
 
+#include <cmath>
+
 namespace b2a
 {
 
@@ -32,6 +34,8 @@ public:
 	/// Taylor's bound about the box's centre, off the axis (|cx| at least twice the radius of
 	/// the disc around the box); −∞ elsewhere.
 	double TightLevelLowerBound(const OrientedBox& box) const override;
+	/// Off the axis (|cx| ≥ ρ), where the level's |x|^{2/3} has its kink.
+	bool LevelSmoothOver(Vec2 centre, double radius) const override { return std::fabs(centre.x) >= radius; }
 	/// The Hessian's eigenvalues bounded over the disc, off the axis (|cx| ≥ 2ρ); false elsewhere.
 	bool CurvatureBounds(Vec2 centre, double radius, double& lowest, double& highest) const override;
 	/// See Shape::LevelUpperBound.

@@ -206,6 +206,15 @@ public:
 		(void)box;
 		return -std::numeric_limits<double>::infinity();
 	}
+	/// Whether the level is smooth (three times differentiable) over the disc |x − centre| ≤
+	/// radius (body frame): where the grid method's refinement may end a step early, Newton's
+	/// convergence predicted from its steps. The default, false, claims nothing (a user's shape).
+	virtual bool LevelSmoothOver(Vec2 centre, double radius) const
+	{
+		(void)centre;
+		(void)radius;
+		return false;
+	}
 	/// Bounds of the level's curvature over the disc |x − centre| ≤ radius (body frame): every
 	/// eigenvalue of the level's Hessian lies in [lowest, highest] there, so that along a line
 	/// through the disc the level's second derivative does too (times the direction's squared

@@ -72,6 +72,10 @@ public:
 	/// with |x| and |y|. The grid method prunes with it where a superellipse meets a heart. (No
 	/// upper bound: only the line search inside a non-convex particle would use one.)
 	double LevelLowerBound(Vec2 centre, double radius) const override;
+	/// An exponent that is not an even integer makes its term non-smooth on the axis where its
+	/// coordinate vanishes (|x|^2.5 has no third derivative at x = 0); the ζ-form's power of
+	/// the raw level is not smooth at the centre. Smooth over a disc clear of those.
+	bool LevelSmoothOver(Vec2 centre, double radius) const override;
 	/// For an ellipse, the quadratic of FarCrossing without real roots (its discriminant below
 	/// rounding); for other exponents, a line that misses the bounding box |x| ≤ a, |y| ≤ b.
 	bool LineMisses(Vec2 x, Vec2 d) const override;

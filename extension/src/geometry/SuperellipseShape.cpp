@@ -236,6 +236,13 @@ bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
 	return QuadraticFarRoot(D * D + E * E, X * D + Y * E, (X * X + Y * Y) - 1.0, t) == LineQuadratic::crosses;
 }
 
+bool SuperellipseShape::LevelSmoothOver(Vec2 centre, double radius) const
+{
+	auto even = [](int k) { return k >= 2 && k % 2 == 0; };
+	return (even(m_terms.nInt) || std::fabs(centre.x) >= radius) && (even(m_terms.mInt) || std::fabs(centre.y) >= radius) &&
+	       (m_zeta <= 0.0 || Length(centre) >= radius);
+}
+
 double SuperellipseShape::LevelLowerBound(Vec2 centre, double radius) const
 {
 	// The level at the disc's point nearest the axes in each coordinate: f = |x/a|^n + |y/b|^m
