@@ -197,7 +197,7 @@ TEST_CASE("powers: CubeRoot keeps zero with its sign and hands the ends of the r
 		CHECK(CubeRoot(x) == std::cbrt(x));
 }
 
-TEST_CASE("powers: CubeRootBounds bracket the exact cube root within 2e-5, over the whole range")
+TEST_CASE("powers: CubeRootBounds bracket the exact cube root within 2e-3, over the whole range")
 {
 	Random rng(7);
 	double widest = 0.0;
@@ -219,8 +219,8 @@ TEST_CASE("powers: CubeRootBounds bracket the exact cube root within 2e-5, over 
 	for (double x : {0.0, 1e-310, 1e-290, 1e290, 1e300, std::numeric_limits<double>::max(), std::numeric_limits<double>::min()})
 		check(x);
 	CAPTURE(widest);
-	CHECK(widest <= 2e-5);
-	CHECK(widest >= 1e-6); // (two steps, not three: the bounds are meant to be cheap)
+	CHECK(widest <= 2.1e-3); // (the lower margin, 2e-3, and the step's own 1e-3 at most)
+	CHECK(widest >= 1e-3);   // (one step, not two: the bounds are meant to be cheap)
 }
 
 TEST_CASE("powers: RootOf is t^(1/e) by square roots for e = 2, 4, 8 and by pow otherwise")
