@@ -51,6 +51,8 @@ bool CrossingByCurvature(const Shape& shape, Vec2 x, Vec2 u, double f0, double p
 	const bool inside = f0 < 0.0;
 	const double tangent = -f0 / p;
 	const double end = inside ? tangent : 2.0 * tangent;
+	// (|u| of its own, not the caller's |dir|: a pose made from Box2D's float rotation turns
+	// lengths by up to 1e-7, and the curvature bounds below hold to 1e-12.)
 	const double len2 = LengthSquared(u), len = std::sqrt(len2);
 	if (!(end > 0.0 && end <= sMax))
 		return false;

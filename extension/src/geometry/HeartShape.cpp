@@ -62,6 +62,21 @@ inline bool CubeRootsOverDisc(Vec2 centre, double radius, DiscCubeRoots& r)
 	r.k = (r.inverse * (1.0 + 0.52 * t)) * (1.0 + 1e-6);
 	return true;
 }
+
+// The terms of the eigenvalue bounds above over the disc of radius ρ about c, from k:
+// the least eigenvalue is at least 2 + down − e and the greatest at most 2 + up + e, with
+// down = (2/9) min(cy − ρ, 0) k⁴, up = (2/9) max(cy + ρ, 0) k⁴ and e = (2/3) k. (Taylor's box
+// bound and the curvature bounds share them.)
+struct EigenvalueTerms
+{
+	double down, up, e;
+};
+inline EigenvalueTerms EigenvalueTermsOverDisc(Vec2 centre, double radius, double k)
+{
+	const double k2 = k * k, k4 = k2 * k2;
+	return {(2.0 / 9.0) * std::min(centre.y - radius, 0.0) * k4, (2.0 / 9.0) * std::max(centre.y + radius, 0.0) * k4,
+	        (2.0 / 3.0) * k};
+}
 } // namespace
 
 double HeartShape::Level(Vec2 x) const
@@ -217,22 +232,21 @@ double HeartShape::TightLevelLowerBound(const OrientedBox& box) const
 	DiscCubeRoots roots;
 	if (!CubeRootsOverDisc(centre, radius, roots))
 		return -std::numeric_limits<double>::infinity();
-	const double ax = std::fabs(centre.x), cy = centre.y, inverse = roots.inverse, k = roots.k;
+	const double ax = std::fabs(centre.x), cy = centre.y, inverse = roots.inverse;
 	const double c2 = roots.root * roots.root; // |cx|^{2/3}
 	const double r2 = centre.x * centre.x + cy * cy;
 	const double bend = (2.0 / 3.0) * inverse * cy; // (2/3)|cx|^{−1/3} cy
 	const double gx = 2.0 * centre.x - (centre.x > 0.0 ? bend : -bend); // ∂x
 	const double gy = 2.0 * cy - c2;
-	const double k2 = k * k, k4 = k2 * k2;
-	const double low = std::min(cy - radius, 0.0);
-	const double m = (2.0 + (2.0 / 9.0) * low * k4) - (2.0 / 3.0) * k;
+	const EigenvalueTerms terms = EigenvalueTermsOverDisc(centre, radius, roots.k);
+	const double m = (2.0 + terms.down) - terms.e;
 	const double gu = std::fabs(gx * box.axis.x + gy * box.axis.y), gv = std::fabs(gy * box.axis.x - gx * box.axis.y);
 	if (!(std::fabs(m) <= 1e300 && gu <= 1e300 && gv <= 1e300))
 		return -std::numeric_limits<double>::infinity();
 	const double ml = m * l, mw = m * w;
 	const double drop = ((gu >= ml ? 0.5 * ml * l : 0.0) - gu * l) + ((gv >= mw ? 0.5 * mw * w : 0.0) - gv * w);
 	const double gradientSize = (2.0 * ax + std::fabs(bend)) + (2.0 * std::fabs(cy) + c2);
-	const double curve = (1.0 / 9.0) * -low * k4 + (1.0 / 3.0) * k;
+	const double curve = 0.5 * (terms.e - terms.down); // (|down| + e)/2: the Hessian beyond 2, halved as in (m/2)|d|²
 	const double size = (r2 + c2 * std::fabs(cy)) + (gradientSize * radius + (radius * radius) * (1.0 + curve));
 	return ((r2 - c2 * cy) + drop) - 1e-6 * size;
 }
@@ -246,14 +260,12 @@ bool HeartShape::CurvatureBounds(Vec2 centre, double radius, double& lowest, dou
 	DiscCubeRoots roots;
 	if (!CubeRootsOverDisc(centre, radius, roots))
 		return false;
-	const double k = roots.k, k2 = k * k, k4 = k2 * k2;
-	const double down = (2.0 / 9.0) * std::min(centre.y - radius, 0.0) * k4, up = (2.0 / 9.0) * std::max(centre.y + radius, 0.0) * k4;
-	const double e = (2.0 / 3.0) * k;
-	const double size = 2.0 + (up - down) + e;
+	const EigenvalueTerms t = EigenvalueTermsOverDisc(centre, radius, roots.k);
+	const double size = 2.0 + (t.up - t.down) + t.e;
 	if (!(size <= 1e300))
 		return false;
-	lowest = ((2.0 + down) - e) - 1e-12 * size;
-	highest = ((2.0 + up) + e) + 1e-12 * size;
+	lowest = ((2.0 + t.down) - t.e) - 1e-12 * size;
+	highest = ((2.0 + t.up) + t.e) + 1e-12 * size;
 	return true;
 }
 
