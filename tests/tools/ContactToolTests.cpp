@@ -43,8 +43,14 @@ int RunTool(const std::string& args, const std::string& input, std::string& out)
 	}
 	const std::string cmd = std::string("\"") + B2A_CONTACT_EXE + "\" " + args + " < " + inPath + " > " + outPath + " 2>/dev/null";
 	const int status = std::system(cmd.c_str());
-	std::ifstream f(outPath);
-	out.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+	{
+		std::ifstream f(outPath);
+		out.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+	}
+	// (Removed again: left behind, every test run added two files to the temporary folder.)
+	std::error_code ignored;
+	std::filesystem::remove(inPath, ignored);
+	std::filesystem::remove(outPath, ignored);
 	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
