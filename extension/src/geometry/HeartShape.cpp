@@ -49,7 +49,8 @@ struct DiscCubeRoots
 	double inverse; // |cx|^{−1/3}, within 2e-8
 	double k;       // ≥ (|cx| − ρ)^{−1/3}
 };
-// False where the disc comes within 2ρ of the axis (or |cx| is outside the table's range).
+// False where the disc's centre lies within 2ρ of the axis, |cx| < 2ρ (or |cx| is outside the
+// table's range).
 inline bool CubeRootsOverDisc(Vec2 centre, double radius, DiscCubeRoots& r)
 {
 	const double ax = std::fabs(centre.x);
