@@ -31,6 +31,11 @@ public:
 	b2Vec2 Offset() const { return m_offset; }
 	/// Length of the axes DrawTransform draws (world units; the scene's size sets it).
 	void SetAxisLength(float length) { m_axisLength = length; }
+	/// Points on each analytic outline (b2a::DrawWorld's outlineVertices): the viewer sets it from
+	/// the bodies' size on the screen, so that small particles cost few triangles.
+	void SetOutlineVertices(int count) { m_outlineVertices = count; }
+	/// Points on each analytic outline.
+	int OutlineVertices() const { return m_outlineVertices; }
 
 	void DrawPolygon(const b2Vec2* vertices, int32 vertexCount, const b2Color& color) override;
 	void DrawSolidPolygon(const b2Vec2* vertices, int32 vertexCount, const b2Color& color) override;
@@ -56,6 +61,7 @@ private:
 	std::vector<int> m_scratch;
 	b2Vec2 m_offset{0.0f, 0.0f};
 	float m_axisLength = 0.4f;
+	int m_outlineVertices = 48;
 };
 
 } // namespace b2a::viewer

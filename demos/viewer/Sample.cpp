@@ -169,7 +169,7 @@ void Sample::Draw(DrawBatch& batch, const DrawSettings& draw)
 	flags |= draw.centresOfMass ? b2Draw::e_centerOfMassBit : 0;
 	batch.SetFlags(flags);
 	batch.SetAxisLength(0.4f * d.bodySize);
-	DrawWorld(m_world, &batch);
+	DrawWorld(m_world, &batch, batch.OutlineVertices());
 
 	if (draw.contactPoints || draw.contactNormals || draw.contactImpulses)
 	{

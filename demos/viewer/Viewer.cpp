@@ -246,6 +246,9 @@ void Viewer::DrawScene()
 	const auto t0 = Clock::now();
 	m_batch.Clear();
 	m_batch.SetOffset(b2Vec2(0.0f, 0.0f));
+	// About one outline point per 2.5 pixels of a typical body's circumference, 12 to 48.
+	const float pixels = m_defaults.bodySize / m_camera.UnitsPerPixel();
+	m_batch.SetOutlineVertices(std::clamp(int(std::lround(b2_pi * pixels / 2.5f)), 12, 48));
 	m_sample->Draw(m_batch, m_settings.draw);
 	if (m_twin)
 	{
@@ -256,9 +259,11 @@ void Viewer::DrawScene()
 	m_times.draw = Millis(t0);
 }
 
-void Viewer::RecordFrameTime(double ms)
+void Viewer::RecordFrameTime(double ms, double renderMs)
 {
 	m_times.frame = ms;
+	m_times.render = renderMs;
+	m_times.totalRender += renderMs;
 	m_recentFrames.push_back(ms);
 	m_recentSteps.push_back(m_times.step);
 	if (m_recentFrames.size() > 60)

@@ -30,6 +30,7 @@ struct FrameTimes
 	double frame = 0.0;     ///< the whole last frame (stepping, drawing, the panel, the swap)
 	double step = 0.0;      ///< the last frame's stepping
 	double draw = 0.0;      ///< the last frame's DrawScene
+	double render = 0.0;    ///< the last frame's OpenGL drawing, Dear ImGui's included, and the buffer swap
 	double meanFrame = 0.0; ///< mean over the last 60 frames
 	double meanStep = 0.0;  ///< mean stepping over the last 60 frames
 	double maxFrame = 0.0;  ///< slowest of the last 60 frames
@@ -37,6 +38,7 @@ struct FrameTimes
 	double totalFrame = 0.0; ///< sum of all frame times since the sample started
 	double totalStep = 0.0;  ///< sum of all stepping times since the sample started
 	double totalDraw = 0.0;  ///< sum of all drawing times since the sample started
+	double totalRender = 0.0; ///< sum of all rendering times since the sample started
 	double worstFrame = 0.0; ///< slowest frame since the sample started
 };
 
@@ -62,6 +64,8 @@ public:
 	Sample* Twin() { return m_twin.get(); }
 	/// Where the twin is drawn relative to the sample.
 	b2Vec2 TwinOffset() const;
+	/// The settings (the panel's state).
+	const Settings& GetSettings() const { return m_settings; }
 	/// The current sample's defaults.
 	const SampleDefaults& Defaults() const { return m_defaults; }
 	/// The current sample's step settings (the panel edits them).
@@ -93,8 +97,8 @@ public:
 	void DrawScene();
 	/// The panel and the text over the scene (Dear ImGui; between ImGui::NewFrame and Render).
 	void Panel();
-	/// Record the whole last frame's duration (main measures it).
-	void RecordFrameTime(double milliseconds);
+	/// Record the whole last frame's duration and the part of it spent rendering (main measures them).
+	void RecordFrameTime(double milliseconds, double renderMilliseconds = 0.0);
 	/// What DrawScene drew.
 	const DrawBatch& Batch() const { return m_batch; }
 	/// Frame times.

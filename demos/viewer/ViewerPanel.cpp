@@ -172,7 +172,7 @@ void Viewer::StatisticsPanel()
 		return;
 	const FrameTimes& t = m_times;
 	ImGui::Text("frame %.1f ms (mean %.1f, max %.1f)", t.frame, t.meanFrame, t.maxFrame);
-	ImGui::Text("step %.1f ms, draw %.1f ms", t.meanStep, t.draw);
+	ImGui::Text("step %.1f ms, draw %.1f ms, render %.1f ms", t.meanStep, t.draw, t.render);
 	WorldCounts(m_sample->World());
 	if (m_twin)
 	{

@@ -78,7 +78,7 @@ struct Options
 
 // What the headless tests check: frame times, the world's soundness, where the bodies are on
 // the screen and where the panel is.
-void WriteReport(const std::string& path, Viewer& viewer, const Options& o)
+void WriteReport(const std::string& path, Viewer& viewer)
 {
 	const FrameTimes& t = viewer.Times();
 	const WorldHealth h = viewer.Health();
@@ -90,6 +90,7 @@ void WriteReport(const std::string& path, Viewer& viewer, const Options& o)
 	j["mean_frame_ms"] = t.frames > 0 ? t.totalFrame / t.frames : 0.0;
 	j["mean_step_ms"] = t.frames > 0 ? t.totalStep / t.frames : 0.0;
 	j["mean_draw_ms"] = t.frames > 0 ? t.totalDraw / t.frames : 0.0;
+	j["mean_render_ms"] = t.frames > 0 ? t.totalRender / t.frames : 0.0;
 	j["worst_frame_ms"] = t.worstFrame;
 	j["bodies"] = h.bodies;
 	j["non_finite"] = h.nonFinite;
@@ -107,7 +108,9 @@ void WriteReport(const std::string& path, Viewer& viewer, const Options& o)
 	for (const auto& [name, tally] : viewer.Methods().methods)
 		methods[name] = {{"contacts", tally.contacts}, {"touching", tally.touching}, {"mean_us", tally.Mean()}};
 	j["methods"] = methods;
-	j["compare"] = o.compare.empty() ? "analytic" : o.compare;
+	j["readings"] = viewer.Current().Readings();
+	const char* compare[] = {"analytic", "polygons", "side-by-side"};
+	j["compare"] = compare[int(viewer.GetSettings().compare)];
 	std::ofstream out(path);
 	out << j.dump(1, '\t') << "\n";
 	if (!out)
@@ -177,6 +180,7 @@ int Run(const Options& o, Settings& settings)
 			viewer.Update();
 			viewer.DrawScene();
 			viewer.Panel();
+			const auto r0 = std::chrono::steady_clock::now();
 			ImGui::Render();
 			glViewport(0, 0, viewer.View().width, viewer.View().height);
 			glClearColor(Viewer::kBackground[0], Viewer::kBackground[1], Viewer::kBackground[2], 1.0f);
@@ -191,7 +195,9 @@ int Run(const Options& o, Settings& settings)
 					status = 1;
 				}
 			glfwSwapBuffers(window);
-			viewer.RecordFrameTime(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+			const auto t1 = std::chrono::steady_clock::now();
+			viewer.RecordFrameTime(std::chrono::duration<double, std::milli>(t1 - t0).count(),
+			                       std::chrono::duration<double, std::milli>(t1 - r0).count());
 			if (o.frames > 0 && frame % 100 == 0)
 				std::fprintf(stderr, "b2a_viewer: frame %d of %d, %.1f ms a frame\n", frame, o.frames, viewer.Times().meanFrame);
 			if (last)
@@ -200,12 +206,12 @@ int Run(const Options& o, Settings& settings)
 		const FrameTimes& t = viewer.Times();
 		const WorldHealth h = viewer.Health();
 		if (!o.report.empty())
-			WriteReport(o.report, viewer, o);
-		std::printf("b2a_viewer: %s: %d frames, mean frame %.2f ms (step %.2f ms, draw %.2f ms), worst %.1f ms; %d bodies, "
-		            "%d non-finite, %d escaped\n",
-		            settings.sample.c_str(), t.frames, t.frames ? t.totalFrame / t.frames : 0.0,
-		            t.frames ? t.totalStep / t.frames : 0.0, t.frames ? t.totalDraw / t.frames : 0.0, t.worstFrame, h.bodies,
-		            h.nonFinite, h.escaped);
+			WriteReport(o.report, viewer);
+		const double n = t.frames > 0 ? double(t.frames) : 1.0;
+		std::printf("b2a_viewer: %s: %d frames, mean frame %.2f ms (step %.2f ms, draw %.2f ms, render %.2f ms), worst %.1f ms; "
+		            "%d bodies, %d non-finite, %d escaped\n",
+		            settings.sample.c_str(), t.frames, t.totalFrame / n, t.totalStep / n, t.totalDraw / n, t.totalRender / n,
+		            t.worstFrame, h.bodies, h.nonFinite, h.escaped);
 		if (h.nonFinite > 0 || h.escaped > 0)
 			status = 1;
 	}
