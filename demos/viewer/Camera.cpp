@@ -45,6 +45,9 @@ void Camera::Fit(b2Vec2 lo, b2Vec2 hi, float rightPixels)
 	halfHeight = margin * 0.5f * std::max(hi.y - lo.y, (hi.x - lo.x) * float(height) / usable);
 	center = 0.5f * (lo + hi);
 	center.x += 0.5f * (float(width) - usable) * UnitsPerPixel();
+	// Where the box is narrower than the view is tall (a wide box, or side by side), it sits at
+	// the bottom, leaving the room above for the text over the scene.
+	center.y = lo.y - 0.5f * (margin - 1.0f) * (hi.y - lo.y) + halfHeight;
 }
 
 } // namespace b2a::viewer
