@@ -128,6 +128,12 @@ protected:
 	b2Body* GroundBody();
 	/// A two-sided edge of the ground body, from a to b.
 	b2Fixture* AddGroundEdge(b2Vec2 a, b2Vec2 b, float friction = 0.6f);
+	/// Start the clock and the step count again (a sample that loads a new case).
+	void ResetClock()
+	{
+		m_time = 0.0;
+		m_stepCount = 0;
+	}
 	/// Ask the viewer to show the sample's (new) view box.
 	void RequestView() { m_viewRequest = true; }
 

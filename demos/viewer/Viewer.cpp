@@ -314,7 +314,7 @@ std::vector<b2Vec2> Viewer::BodyScreenPoints() const
 		const b2Vec2 offset = s == m_twin.get() ? TwinOffset() : b2Vec2(0.0f, 0.0f);
 		for (const b2Body* b = s->World()->GetBodyList(); b; b = b->GetNext())
 		{
-			if (b->GetType() != b2_dynamicBody)
+			if (b->GetType() == b2_staticBody)
 				continue;
 			const b2Vec2 c = b->GetWorldCenter();
 			bool inside = false;

@@ -112,7 +112,8 @@ public:
 
 	/// NaN and escape check of the world(s).
 	WorldHealth Health() const;
-	/// Screen points of the dynamic bodies' centres that lie inside their own fixtures.
+	/// Screen points of the moving (dynamic and kinematic) bodies' centres of mass that lie inside
+	/// their own fixtures.
 	std::vector<b2Vec2> BodyScreenPoints() const;
 
 	/// The panel's width in pixels.

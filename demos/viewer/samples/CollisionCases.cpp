@@ -2,7 +2,9 @@
 // particles move and turn with constant velocities (no gravity) and collide. The exact first
 // contact from b2a::TimeOfImpact is drawn as grey outlines with its point; the panel says when
 // fixed stepping (the world's own steps, the paper's 440 over the interval) first finds them
-// overlapping, and how late that is.
+// overlapping, and how late that is. Until then the particles are kinematic bodies: Box2D turns
+// those about their origin, as b2a::Motion does (a dynamic body turns about its centre of mass,
+// which for a heart is elsewhere); from then on they are dynamic and collide.
 #include "samples/PairSample.h"
 #include "samples/Samples.h"
 
@@ -113,8 +115,13 @@ protected:
 		if (m_steppingTime >= 0.0)
 			return;
 		const ContactResult r = ComputeFixtureContact(m_bodies[0]->GetFixtureList(), m_bodies[1]->GetFixtureList());
-		if (r.Ok() && r.touching)
-			m_steppingTime = Time();
+		if (!r.Ok() || !r.touching)
+			return;
+		m_steppingTime = Time();
+		// The same motion goes on in dynamic bodies: b2Body::ResetMassData gives the centre of
+		// mass the origin's velocity plus the turn's, ω × (c − p).
+		for (b2Body* b : m_bodies)
+			b->SetType(b2_dynamicBody);
 	}
 
 private:
@@ -128,9 +135,9 @@ private:
 		const Motion* motions[2] = {&c.ma, &c.mb};
 		for (int i = 0; i < 2; ++i)
 		{
+			m_bodies[i]->SetType(b2_kinematicBody);
 			m_bodies[i]->SetLinearVelocity(b2Vec2(float(motions[i]->velocity.x), float(motions[i]->velocity.y)));
 			m_bodies[i]->SetAngularVelocity(float(motions[i]->angularVelocity));
-			m_bodies[i]->SetBullet(true);
 		}
 		m_toi = TimeOfImpact(*c.a, c.ma, *c.b, c.mb, c.tMax);
 		m_steppingTime = -1.0;

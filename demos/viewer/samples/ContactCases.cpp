@@ -192,7 +192,7 @@ private:
 		Inspect();
 		// The view holds both particles and their rescaled outlines.
 		std::vector<std::vector<b2Vec2>> outlines = {LevelOutline(*c.a, c.pa), LevelOutline(*c.b, c.pb)};
-		if (m_level.Ok() && m_level.level < 30.0)
+		if (m_level.Ok())
 		{
 			const bool common = c.mode == "common";
 			outlines.push_back(LevelOutline(*c.a, c.pa, m_level.level * (common ? c.a->SurfaceLevel() : 1.0)));

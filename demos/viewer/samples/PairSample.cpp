@@ -52,6 +52,7 @@ PairSample::PairSample()
 
 void PairSample::ReplacePair(const ShapePtr shapes[2], const Pose poses[2], float friction, float restitution)
 {
+	ResetClock();
 	for (int i = 0; i < 2; ++i)
 	{
 		if (m_bodies[i])

@@ -30,7 +30,7 @@ class PairSample : public Sample
 {
 protected:
 	PairSample();
-	/// Destroy the pair and make particles of `shapes` at `poses` (density 1).
+	/// Destroy the pair and make particles of `shapes` at `poses` (density 1); the clock starts again.
 	void ReplacePair(const ShapePtr shapes[2], const Pose poses[2], float friction = 0.6f, float restitution = 0.0f);
 	/// The view box fits these outlines; the viewer is asked to show it.
 	void FitView(const std::vector<std::vector<b2Vec2>>& outlines);
