@@ -37,12 +37,20 @@ public:
 	/// Points on each analytic outline.
 	int OutlineVertices() const { return m_outlineVertices; }
 
+	/// b2Draw: a closed outline.
 	void DrawPolygon(const b2Vec2* vertices, int32 vertexCount, const b2Color& color) override;
+	/// b2Draw: a filled polygon with its outline (convex, or star-shaped about its centroid, or
+	/// any simple polygon, which is cut into ears).
 	void DrawSolidPolygon(const b2Vec2* vertices, int32 vertexCount, const b2Color& color) override;
+	/// b2Draw: a circle's outline.
 	void DrawCircle(const b2Vec2& center, float radius, const b2Color& color) override;
+	/// b2Draw: a filled circle with a line along its axis.
 	void DrawSolidCircle(const b2Vec2& center, float radius, const b2Vec2& axis, const b2Color& color) override;
+	/// b2Draw: a segment.
 	void DrawSegment(const b2Vec2& p1, const b2Vec2& p2, const b2Color& color) override;
+	/// b2Draw: a frame's axes, red along x and green along y.
 	void DrawTransform(const b2Transform& xf) override;
+	/// b2Draw: a point of `size` pixels.
 	void DrawPoint(const b2Vec2& p, float size, const b2Color& color) override;
 
 	/// A filled polygon without an outline (the pair inspector's rescaled shapes).

@@ -121,7 +121,9 @@ b2Body* Sample::AddParticle(const ShapePtr& shape, b2Vec2 position, float angle,
 	fd.restitution = restitution;
 	AnalyticFixtureDef af;
 	af.shape = shape;
-	CreateAnalyticFixture(body, fd, af);
+	b2Fixture* f = CreateAnalyticFixture(body, fd, af);
+	if (m_polygons) // made while the scene shows 8-gons: one too
+		SwitchToPolygon(f);
 	return body;
 }
 
@@ -319,10 +321,41 @@ void Sample::LaunchRandomBomb()
 	LaunchBomb(p, -5.0f * d.metre * b2Vec2(0.0f, 1.0f));
 }
 
+void Sample::SwitchToPolygon(b2Fixture* f)
+{
+	b2Body* b = f->GetBody();
+	auto rec = std::make_unique<SwitchedFixture>();
+	rec->shape = m_shapes[GetAnalyticShape(f)];
+	// The shape's pose in the body frame: the body's inverse transform of its world pose.
+	const Pose world = GetAnalyticPose(f);
+	const b2Vec2 lp = b2MulT(b->GetTransform(), ToB2(world.p));
+	rec->local = Pose(Vec2(lp.x, lp.y), world.q.Angle() - double(b->GetAngle()));
+	b2FixtureDef& def = rec->def;
+	def.density = f->GetDensity();
+	def.friction = f->GetFriction();
+	def.restitution = f->GetRestitution();
+	def.restitutionThreshold = f->GetRestitutionThreshold();
+	def.filter = f->GetFilterData();
+	def.isSensor = f->IsSensor();
+	def.userData = f->GetUserData();
+	b2PolygonShape polygon = demo::InscribedPolygon(*rec->shape, m_polygonVertices);
+	b2Vec2 v[b2_maxPolygonVertices];
+	const b2Transform local(lp, b2Rot(float(rec->local.q.Angle())));
+	for (int32 i = 0; i < polygon.m_count; ++i)
+		v[i] = b2Mul(local, polygon.m_vertices[i]);
+	polygon.Set(v, polygon.m_count);
+	b2FixtureDef pd = def;
+	pd.shape = &polygon;
+	b2Fixture* made = b->CreateFixture(&pd);
+	b->DestroyFixture(f);
+	m_switched[made] = std::move(rec);
+}
+
 void Sample::SwitchToPolygons(bool polygons, int vertices)
 {
 	if (polygons == m_polygons)
 		return;
+	m_polygonVertices = vertices;
 	if (polygons)
 	{
 		for (b2Body* b = m_world->GetBodyList(); b; b = b->GetNext())
@@ -332,33 +365,7 @@ void Sample::SwitchToPolygons(bool polygons, int vertices)
 				if (GetAnalyticShape(f) && m_shapes.count(GetAnalyticShape(f)))
 					analytic.push_back(f);
 			for (b2Fixture* f : analytic)
-			{
-				auto rec = std::make_unique<SwitchedFixture>();
-				rec->shape = m_shapes[GetAnalyticShape(f)];
-				// The shape's pose in the body frame: the body's inverse transform of its world pose.
-				const Pose world = GetAnalyticPose(f);
-				const b2Vec2 lp = b2MulT(b->GetTransform(), ToB2(world.p));
-				rec->local = Pose(Vec2(lp.x, lp.y), world.q.Angle() - double(b->GetAngle()));
-				b2FixtureDef& def = rec->def;
-				def.density = f->GetDensity();
-				def.friction = f->GetFriction();
-				def.restitution = f->GetRestitution();
-				def.restitutionThreshold = f->GetRestitutionThreshold();
-				def.filter = f->GetFilterData();
-				def.isSensor = f->IsSensor();
-				def.userData = f->GetUserData();
-				b2PolygonShape polygon = demo::InscribedPolygon(*rec->shape, vertices);
-				b2Vec2 v[b2_maxPolygonVertices];
-				const b2Transform local(lp, b2Rot(float(rec->local.q.Angle())));
-				for (int32 i = 0; i < polygon.m_count; ++i)
-					v[i] = b2Mul(local, polygon.m_vertices[i]);
-				polygon.Set(v, polygon.m_count);
-				b2FixtureDef pd = def;
-				pd.shape = &polygon;
-				b2Fixture* made = b->CreateFixture(&pd);
-				b->DestroyFixture(f);
-				m_switched[made] = std::move(rec);
-			}
+				SwitchToPolygon(f);
 		}
 	}
 	else

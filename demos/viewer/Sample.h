@@ -121,7 +121,8 @@ protected:
 	virtual void AfterStep() {}
 	/// Keep a shape so that the fixtures made from it can be switched to polygons and back.
 	void RememberShape(const ShapePtr& shape);
-	/// A dynamic body with one analytic fixture of `shape` (remembered for the 8-gon switch).
+	/// A dynamic body with one analytic fixture of `shape` (remembered for the 8-gon switch; made
+	/// an 8-gon at once while the sample shows 8-gons).
 	b2Body* AddParticle(const ShapePtr& shape, b2Vec2 position, float angle, float density = 1.0f, float friction = 0.6f,
 	                    float restitution = 0.0f);
 	/// A static body at the origin for the mouse joint and the samples' ground.
@@ -139,6 +140,7 @@ protected:
 
 private:
 	struct SwitchedFixture;
+	void SwitchToPolygon(b2Fixture* analytic);
 	std::unique_ptr<b2World> m_ownedWorld;
 	b2World* m_world = nullptr;
 	b2Body* m_ground = nullptr;
@@ -151,6 +153,7 @@ private:
 	double m_time = 0.0;
 	b2Profile m_profile{};
 	bool m_polygons = false;
+	int m_polygonVertices = 8;
 	bool m_viewRequest = false;
 	std::map<const Shape*, ShapePtr> m_shapes;
 	std::map<b2Fixture*, std::unique_ptr<SwitchedFixture>> m_switched; // polygon fixture → what it replaced

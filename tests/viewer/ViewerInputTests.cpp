@@ -245,6 +245,14 @@ TEST_CASE("sandbox: it spawns the editor's shape with C")
 	CHECK(s->Describe().find("superellipse") != std::string::npos);
 	CHECK(s->Support(Vec2(1.0, 0.0)).x == doctest::Approx(1.0));
 	CHECK(s->Support(Vec2(0.0, 1.0)).y == doctest::Approx(0.6));
+	// While the scene shows Box2D 8-gons, what it spawns is one too, and switches back with the rest.
+	t.view->SetCompare(CompareMode::polygons);
+	t.Key(GLFW_KEY_C);
+	b2Fixture* made = t.World()->GetBodyList()->GetFixtureList();
+	CHECK(GetAnalyticShape(made) == nullptr);
+	CHECK(made->GetType() == b2Shape::e_polygon);
+	t.view->SetCompare(CompareMode::analytic);
+	CHECK(GetAnalyticShape(t.World()->GetBodyList()->GetFixtureList()) != nullptr);
 }
 
 TEST_CASE("granular: a sample's G opens its outlet, and particles leave through it")

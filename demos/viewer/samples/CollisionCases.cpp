@@ -43,6 +43,7 @@ public:
 		d.bodySize = float(std::max(c.a->BoundingRadius(), c.b->BoundingRadius()));
 		d.metre = 100.0f * d.bodySize; // the mouse joint's force in the scene's own scale
 		d.mouseHertz = 200.0f;
+		d.polygonTwin = false; // the first overlap is found by the analytic contact
 		return d;
 	}
 
