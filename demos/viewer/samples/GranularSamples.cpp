@@ -154,7 +154,7 @@ std::unique_ptr<Sample> MakeBeverlooSample()
 	c.particles = 500;
 	c.outletWidth = 6.0 * c.width;
 	s.openAt = 0.2;
-	s.viewTop = 110.0f;
+	s.viewTop = 50.0f; // the settled bed; the lattice starts above it and falls in
 	return std::make_unique<GranularSample>(s);
 }
 
