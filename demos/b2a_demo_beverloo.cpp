@@ -86,14 +86,8 @@ int main(int argc, char** argv)
 	const auto wallStart = std::chrono::steady_clock::now();
 	Progress progress("b2a_demo_beverloo");
 
-	GranularConfig config;
+	GranularConfig config = BeverlooEllipses();
 	config.seed = opt.seed;
-	config.exponent = 2.0;             // ellipses
-	config.width = 2.0;                // major axis d (mm)
-	config.aspect = 2.0 / 0.66;        // minor axis 0.66 mm
-	config.sizeSpread = 0.05;
-	config.friction = 0.5;
-	config.wallFriction = 0.5;
 	config.boxWidth = opt.quick ? 30.0 : 80.0;
 	config.boxHeight = 800.0;
 	config.particles = int(opt.Number("--particles", opt.quick ? 500 : 4000, 10, 50000));

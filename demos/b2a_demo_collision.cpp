@@ -1,6 +1,7 @@
 // b2analytic demo: collision processes (the paper's Figures 4 and 8): the exact first-contact
 // time and point from the time-of-impact solver, next to what fixed time stepping finds.
 #include "common/DemoCommon.h"
+#include "common/PaperCases.h"
 #include "common/Plot.h"
 #include "common/Svg.h"
 
@@ -36,13 +37,7 @@ in green, the contact configuration in red, the contact point as a dot) and
 stepping_error.svg (error of fixed stepping against the step size).
 )";
 
-struct Case
-{
-	std::string name;
-	ShapePtr a, b;
-	Motion ma, mb;
-	double tMax;
-};
+using Case = CollisionCase;
 
 Json Vec(Vec2 v)
 {
@@ -110,16 +105,7 @@ int main(int argc, char** argv)
 {
 	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_demo_collision", kHelp);
 	Progress progress("b2a_demo_collision");
-	const auto superellipse = MakeSuperellipse(2.0, 4.0, 6.0, 8.0);
-	const auto heart = MakeHeart(1.0);
-	std::vector<Case> cases = {
-		{"superellipses", superellipse, superellipse, Motion{Pose({-6.0, -8.0}, kPi / 4), {600.0, 450.0}, 40.0},
-		 Motion{Pose({25.0, 12.0}, -kPi / 6), {-500.0, -250.0}, -30.0}, 0.05},
-		{"hearts", heart, heart, Motion{Pose({2.0, 4.5}, 0.2), {120.0, 110.0}, 25.0}, Motion{Pose({5.5, 7.8}, -0.6), {-160.0, -90.0}, -40.0},
-		 0.03},
-		{"ellipses", MakeEllipse(10.0, 4.0), MakeEllipse(30.0, 12.0), Motion{Pose({-60.0, 40.0}, 0.5), {3000.0, -1500.0}, 20.0},
-		 Motion{Pose({30.0, -10.0}, -0.3), {-500.0, 400.0}, -5.0}, 0.05},
-	};
+	std::vector<Case> cases = PaperCollisionCases();
 	// Step counts over each interval: the paper's 440 for its superellipses, and others.
 	const std::vector<int> stepCounts = opt.quick ? std::vector<int>{55, 440, 3520} : std::vector<int>{55, 110, 220, 440, 880, 1760, 3520, 7040};
 

@@ -1,6 +1,7 @@
 // b2analytic demo: the paper's contact cases (its Figures 2, 3, 6, 7, 9 and 16), solved exactly,
 // with pictures of the particles, their rescaled outlines and the contact points.
 #include "common/DemoCommon.h"
+#include "common/PaperCases.h"
 #include "common/Svg.h"
 
 #include "b2analytic/b2analytic.h"
@@ -8,7 +9,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <functional>
 #include <vector>
 
 using namespace b2a;
@@ -29,23 +29,7 @@ Writes DIR/summary.json (per case: level, point, method, iterations, median time
 SVG picture per case.
 )";
 
-struct Case
-{
-	std::string name, description, mode;
-	ShapePtr a, b;
-	Pose pa, pb;
-	bool ownPoses = true;                      // the paper's poses are missing: ours
-	std::function<LevelResult()> solve;        // default: by mode, automatic method
-	double paperLevel = 0.0;                   // 0: the paper gives none for our poses
-	Vec2 paperPoint;
-
-	Case(std::string name_, std::string description_, std::string mode_, ShapePtr a_, ShapePtr b_, Pose pa_, Pose pb_,
-	     bool ownPoses_ = true)
-		: name(std::move(name_)), description(std::move(description_)), mode(std::move(mode_)), a(std::move(a_)),
-		  b(std::move(b_)), pa(pa_), pb(pb_), ownPoses(ownPoses_)
-	{
-	}
-};
+using Case = ContactCase;
 
 Json Vec(Vec2 v)
 {
@@ -103,80 +87,20 @@ int main(int argc, char** argv)
 {
 	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_demo_contacts", kHelp);
 	Progress progress("b2a_demo_contacts");
-	std::vector<Case> cases;
-
-	// Superellipses of the paper's Figure 1 (n = 6, m = 8, a = 2, b = 4), poses ours.
-	const ShapePtr se = MakeSuperellipse(2.0, 4.0, 6.0, 8.0);
-	{
-		Case c{"superellipse_separated", "separated superellipses enlarged to touch (paper Fig. 2a, 3a kind)", "common", se, se,
-		       Pose({0.0, 0.0}, kPi / 4), Pose({13.0, 9.0}, -kPi / 6)};
-		cases.push_back(c);
-		Case d{"superellipse_overlapping", "overlapping superellipses reduced to touch (paper Fig. 2b, 3b kind)", "common", se, se,
-		       Pose({0.0, 0.0}, kPi / 4), Pose({1.5, -5.5}, kPi / 3)};
-		cases.push_back(d);
-	}
-	// Hearts (paper eq. 20 with α = 1), grid method; poses ours.
-	const ShapePtr heart = MakeHeart(1.0);
-	{
-		Case c{"heart_separated", "heart i enlarged onto heart j's surface, grid method (paper Fig. 6a, 7a kind)", "scale_a", heart, heart,
-		       Pose({3.0, 5.0}, 0.2), Pose({4.9, 6.8}, -0.5)};
-		cases.push_back(c);
-		Case d{"heart_overlapping", "heart i reduced onto heart k's surface, grid method (paper Fig. 6b, 7b kind)", "scale_a", heart, heart,
-		       Pose({3.0, 5.0}, 0.2), Pose({3.7, 5.9}, 0.6)};
-		cases.push_back(d);
-		Case e{"heart_in_notch", "a small heart inside the notch of a big one: several local minima", "scale_a", MakeHeart(0.05), MakeHeart(1.0),
-		       Pose({0.0, 1.1}, kPi), Pose({0.0, 0.0}, 0.0)};
-		cases.push_back(e);
-	}
-	// Ellipses with the grid method (paper Fig. 9 kind), poses ours.
-	const ShapePtr ell = MakeEllipse(4.0, 2.0);
-	{
-		Case c{"ellipse_grid_separated", "separated ellipses, grid method (paper Fig. 9a, 9c kind)", "scale_a", ell, ell,
-		       Pose({0.0, 0.0}, 0.3), Pose({9.0, 4.0}, -0.4)};
-		cases.push_back(c);
-		Case d{"ellipse_grid_overlapping", "overlapping ellipses, grid method (paper Fig. 9b, 9d kind)", "scale_a", ell, ell,
-		       Pose({0.0, 0.0}, 0.3), Pose({4.0, 1.5}, 1.2)};
-		cases.push_back(d);
-	}
-	// The paper's 1000:1 ellipses (Fig. 16), fully specified: j rescaled onto i's surface.
-	const ShapePtr needle = MakeEllipse(0.1, 100.0);
-	const Pose pi({1.2, 3.4}, kPi / 5.6), pj({2.1, -19.5}, kPi / 4.5);
-	{
-		Case c{"ellipse_1000_grid", "1000:1 ellipses, j enlarged onto i's surface by the grid method (paper Fig. 16)", "scale_a", needle,
-		       needle, pj, pi, false};
-		c.paperLevel = 13.6177;
-		c.paperPoint = Vec2(54.4032, -81.2724);
-		cases.push_back(c);
-		Case d{"ellipse_1000_newton_scale", "the same by Newton on B's surface (the paper reports singular Jacobians)", "scale_a",
-		       needle, needle, pj, pi, false};
-		d.paperLevel = 13.6177;
-		d.paperPoint = Vec2(54.4032, -81.2724);
-		d.solve = [=] { return SolveScaleA(*needle, pj, *needle, pi, MethodChoice::newton); };
-		cases.push_back(d);
-		Case e{"ellipse_1000_common", "1000:1 ellipses, both rescaled to the common level (automatic: Newton)", "common", needle, needle, pi,
-		       pj, false};
-		cases.push_back(e);
-	}
+	std::vector<Case> cases = PaperContactCases();
 
 	const int repeats = opt.quick ? 15 : 201;
 	Json list = Json::array();
 	int failures = 0;
 	for (size_t k = 0; k < cases.size(); ++k)
 	{
-		Case& c = cases[k];
-		if (!c.solve)
-		{
-			if (c.mode == "common")
-				c.solve = [&c] { return SolveCommonLevel(*c.a, c.pa, *c.b, c.pb); };
-			else
-				c.solve = [&c] { return SolveScaleA(*c.a, c.pa, *c.b, c.pb); };
-		}
+		const Case& c = cases[k];
 		LevelResult r;
 		std::vector<double> times;
 		for (int i = 0; i < repeats; ++i)
 		{
 			const auto t0 = std::chrono::steady_clock::now();
-			r = c.solve();
+			r = c.Solve();
 			times.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
 		}
 		std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());

@@ -116,13 +116,7 @@ GranularConfig PackingConfig(int count)
 /// The Beverloo demo's ellipses in a box whose width and outlet grow as sqrt(N).
 GranularConfig HopperConfig(int count)
 {
-	GranularConfig c;
-	c.exponent = 2.0;
-	c.width = 2.0;
-	c.aspect = 2.0 / 0.66;
-	c.sizeSpread = 0.05;
-	c.friction = 0.5;
-	c.wallFriction = 0.5;
+	GranularConfig c = BeverlooEllipses();
 	c.particles = count;
 	c.boxWidth = 80.0 * std::sqrt(count / 4000.0);
 	c.boxHeight = 10.0 * c.boxWidth;

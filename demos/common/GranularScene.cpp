@@ -130,6 +130,18 @@ void GranularScene::AddParticle(ShapePtr shape, const Pose& pose)
 	m_particles.push_back(body);
 }
 
+GranularConfig BeverlooEllipses()
+{
+	GranularConfig c;
+	c.exponent = 2.0;      // ellipses
+	c.width = 2.0;         // major axis d (mm)
+	c.aspect = 2.0 / 0.66; // minor axis 0.66 mm
+	c.sizeSpread = 0.05;
+	c.friction = 0.5;
+	c.wallFriction = 0.5;
+	return c;
+}
+
 b2PolygonShape InscribedPolygon(const Shape& shape, int vertices)
 {
 	if (vertices < 3 || vertices > b2_maxPolygonVertices)
@@ -216,12 +228,16 @@ Json GranularScene::SummaryHead(const std::string& demo, const DemoOptions& opti
 
 void GranularScene::Step()
 {
+	Step(m_config.dt, m_config.velocityIterations, m_config.positionIterations);
+}
+
+void GranularScene::Step(double dt, int velocityIterations, int positionIterations)
+{
 	if (m_config.threads > 1)
-		StepWithPreparedContacts(m_world.get(), float(m_config.dt), m_config.velocityIterations, m_config.positionIterations,
-		                         m_config.threads);
+		StepWithPreparedContacts(m_world.get(), float(dt), velocityIterations, positionIterations, m_config.threads);
 	else
-		m_world->Step(float(m_config.dt), m_config.velocityIterations, m_config.positionIterations);
-	m_time += m_config.dt;
+		m_world->Step(float(dt), velocityIterations, positionIterations);
+	m_time += dt;
 	++m_meterSteps;
 	// Particles that fell well below the outlet have left: count and remove them.
 	const double below = -2.0 * m_config.width;

@@ -46,6 +46,10 @@ struct GranularConfig
 	int threads = 1;
 };
 
+/// The Beverloo demo's particles (after the paper's section 4.3): ellipses of 2 × 0.66 mm, sizes
+/// within ±5 %, friction 0.5 on particles, floor and walls; the container is the caller's.
+GranularConfig BeverlooEllipses();
+
 /// A Box2D polygon with `vertices` (3 to b2_maxPolygonVertices) points on the shape's own
 /// surface: the polar directions of an affine-regular polygon on the shape's axis extents
 /// (for an ellipse, the inscribed polygon of largest area; for a superellipse of exponent 4,
@@ -86,6 +90,8 @@ public:
 
 	/// Advance one step.
 	void Step();
+	/// Advance one step of `dt` with these iterations (the viewer's panel sets them).
+	void Step(double dt, int velocityIterations, int positionIterations);
 	/// Simulated time (s).
 	double Time() const { return m_time; }
 	/// Particle energies now.
