@@ -16,7 +16,7 @@
 namespace b2a::demo
 {
 
-/// A granular scene in millimetres (DESIGN's unit advice: 1 length unit = 1 mm, g = 9810 mm/s²,
+/// A granular scene in millimetres (docs/design.md, "Units": 1 length unit = 1 mm, g = 9810 mm/s²,
 /// small steps, raised restitution thresholds). Masses are in grams (density in g/mm²).
 struct GranularConfig
 {
