@@ -1,9 +1,9 @@
 // b2analytic documentation tests: Markdown links and docs/ references.
 #include "DocLinks.h"
+#include "MarkdownBlocks.h"
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -14,14 +14,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string ReadFile(const fs::path& path)
-{
-	std::ifstream in(path, std::ios::binary);
-	std::ostringstream s;
-	s << in.rdbuf();
-	return s.str();
-}
-
 std::vector<std::string> Lines(const std::string& text)
 {
 	std::vector<std::string> lines;
@@ -220,7 +212,7 @@ std::vector<MarkdownLink> Links(const std::string& markdown)
 std::vector<std::string> BrokenLinks(const fs::path& root, const fs::path& file)
 {
 	std::vector<std::string> problems;
-	const std::string text = ReadFile(file);
+	const std::string text = ReadText(file);
 	for (const MarkdownLink& link : Links(text))
 	{
 		const std::string where = Where(root, file, link.line);
@@ -257,7 +249,7 @@ std::vector<std::string> BrokenLinks(const fs::path& root, const fs::path& file)
 			problems.push_back(where + "'" + link.target + "': an anchor into a file that is not Markdown");
 			continue;
 		}
-		const std::vector<std::string> anchors = Anchors(ReadFile(target));
+		const std::vector<std::string> anchors = Anchors(ReadText(target));
 		if (std::find(anchors.begin(), anchors.end(), anchor) == anchors.end())
 			problems.push_back(where + "'" + link.target + "': no heading with the anchor '" + anchor + "'");
 	}
@@ -267,7 +259,7 @@ std::vector<std::string> BrokenLinks(const fs::path& root, const fs::path& file)
 std::vector<std::string> BrokenDocReferences(const fs::path& root, const fs::path& file)
 {
 	std::vector<std::string> problems;
-	const std::vector<std::string> lines = Lines(ReadFile(file));
+	const std::vector<std::string> lines = Lines(ReadText(file));
 	for (size_t n = 0; n < lines.size(); ++n)
 	{
 		const std::string& line = lines[n];
@@ -295,7 +287,7 @@ std::vector<std::string> BrokenDocReferences(const fs::path& root, const fs::pat
 			size_t i = at + page.size();
 			while (i < line.size() && (line[i] == ',' || line[i] == ' ' || line[i] == '('))
 				++i;
-			const std::vector<std::string> headings = Headings(ReadFile(target));
+			const std::vector<std::string> headings = Headings(ReadText(target));
 			while (i < line.size() && line[i] == '"')
 			{
 				const size_t close = line.find('"', i + 1);
