@@ -3,6 +3,7 @@
 #include "common/DemoCommon.h"
 #include "common/GranularScene.h"
 #include "common/Plot.h"
+#include "common/Svg.h"
 
 #include <algorithm>
 #include <chrono>
@@ -130,7 +131,7 @@ int main(int argc, char** argv)
 		meanMass = scene.MeanParticleMass();
 		settledAt = scene.Time();
 		bedDepth = scene.PileHeight();
-		scene.WriteSnapshot(opt.out + "/packing.svg", "settled bed of 2 x 0.66 mm ellipses");
+		scene.WriteSnapshot(opt.out + "/packing.svg", "settled bed of 2 × 0.66 mm ellipses");
 	}
 	const double rho = packingFraction * particleDensity; // bulk areal density (g/mm²)
 	const double g = config.gravity;
@@ -249,9 +250,10 @@ int main(int argc, char** argv)
 			fy.push_back(C * rho * std::sqrt(g) * std::pow(std::max(0.0, D - k * d), 1.5));
 		}
 		char title[160];
-		std::snprintf(title, sizeof(title), "Beverloo fit: k = %.2f +- %.2f, C = %.3f +- %.3f, r2 = %.4f", k, kSe, C, CSe, r2);
-		WriteText(opt.out + "/beverloo.svg", LinePlot({{"simulated", "#4e79a7", Ds, Qs, true}, {"fit", "#e15759", fx, fy, false}}, title,
-		                                              "outlet width D (mm)", "flow rate Q (g/s)"));
+		std::snprintf(title, sizeof(title), "Beverloo fit: k = %.2f ± %.2f, C = %.3f ± %.3f, r² = %.4f", k, kSe, C, CSe, r2);
+		WriteText(opt.out + "/beverloo.svg",
+		          LinePlot({{"simulated", palette::blue, Ds, Qs, true}, {"fit of Q = C ρ √g (D − k d)^1.5", palette::vermillion, fx, fy, false}},
+		                   title, "outlet width D (mm)", "flow rate Q (g/s)"));
 	}
 	else
 	{

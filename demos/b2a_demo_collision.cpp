@@ -78,25 +78,35 @@ void Draw(const Case& c, const TimeOfImpactResult& toi, const std::string& path)
 		add(*c.a, c.ma.At(t));
 		add(*c.b, c.mb.At(t));
 	}
-	const double pad = 0.08 * std::max(hi.x - lo.x, hi.y - lo.y);
-	SvgCanvas svg(lo - Vec2(pad, pad), hi + Vec2(pad, 3.0 * pad), 720.0);
+	const Style start{palette::blue, palette::blue, 1.5, "", 0.3}, along{"none", palette::green, 0.8, "4,3", 1.0};
+	const Style contact{palette::vermillion, palette::vermillion, 1.8, "", 0.3}, centres{"none", "#777777", 1.0, "2,3", 1.0};
+	const std::vector<KeyEntry> key = {{KeyEntry::Kind::area, start, "at t = 0"},
+	                                   {KeyEntry::Kind::line, along, "every sixth of the way"},
+	                                   {KeyEntry::Kind::area, contact, "at the first contact"},
+	                                   {KeyEntry::Kind::line, centres, "paths of the centres"},
+	                                   {KeyEntry::Kind::dot, {palette::black, "none", 1.0, "", 1.0}, "first contact point"}};
+	// Around the outlines: a margin, a band on top for the text, one below for the key and the
+	// scale bar.
+	const double pixelWidth = 720.0, pad = 0.06 * std::max(hi.x - lo.x, hi.y - lo.y);
+	const double perUnit = pixelWidth / (hi.x - lo.x + 2.0 * pad);
+	const double top = 56.0 / perUnit, bottom = (SvgCanvas::KeySize(key).y + 16.0) / perUnit;
+	SvgCanvas svg(lo - Vec2(pad, pad + bottom), hi + Vec2(pad, pad + top), pixelWidth);
 	for (size_t i = 0; i < outlines.size(); ++i)
 	{
 		const size_t frame = i / 2;
-		const bool first = frame == 0, last = int(frame) == frames;
-		const Style style = first ? Style{"#4e79a7", "#2b4a6f", 1.5, "", 0.35}
-		                          : last ? Style{"#e15759", "#a8272a", 1.8, "", 0.35} : Style{"none", "#59a14f", 0.8, "4,3", 1.0};
-		svg.Polygon(outlines[i], style);
+		svg.Polygon(outlines[i], frame == 0 ? start : int(frame) == frames ? contact : along);
 	}
-	// Paths of the centres.
 	for (const Motion* m : {&c.ma, &c.mb})
-		svg.Polyline({m->pose.p, m->At(tEnd).p}, {"none", "#888888", 1.0, "2,3", 1.0});
+		svg.Polyline({m->pose.p, m->At(tEnd).p}, centres);
 	if (toi.hit)
-		svg.Dot(toi.contact.point, 4.5, "#000000");
+		svg.Dot(toi.contact.point, 4.5, palette::black);
 	char line[200];
 	std::snprintf(line, sizeof(line), "first contact at t = %.9f s at (%.6f, %.6f)", toi.time, toi.contact.point.x, toi.contact.point.y);
-	svg.Label(10, 20, c.name, 16);
-	svg.Label(10, 40, toi.hit ? line : "no contact within the interval", 13);
+	svg.Label(10, 22, c.name, 16);
+	svg.Label(10, 42, toi.hit ? line : "no contact within the interval", 13);
+	svg.Key(8.0, svg.Height() - SvgCanvas::KeySize(key).y - 8.0, key);
+	const double bar = RoundLength(0.2 * (hi.x - lo.x));
+	svg.ScaleBar(svg.Width() - svg.Pixels(bar) - 20.0, svg.Height() - 10.0, bar, LengthLabel(bar, "mm"));
 	WriteText(path, svg.Finish());
 }
 } // namespace
@@ -111,7 +121,7 @@ int main(int argc, char** argv)
 
 	Json list = Json::array();
 	std::vector<Series> errorSeries;
-	const char* colours[] = {"#4e79a7", "#e15759", "#59a14f"};
+	const Marker markers[] = {Marker::circle, Marker::square, Marker::triangle};
 	for (size_t i = 0; i < cases.size(); ++i)
 	{
 		const Case& c = cases[i];
@@ -137,7 +147,7 @@ int main(int argc, char** argv)
 		j["iterations"] = toi.iterations;
 		j["solver_time_us"] = toiMicros;
 		Json stepping = Json::array();
-		Series s{c.name, colours[i % 3], {}, {}, true};
+		Series s{c.name, palette::series[i % 3], {}, {}, true, markers[i % 3]};
 		for (int n : stepCounts)
 		{
 			const double dt = c.tMax / n;
@@ -167,7 +177,8 @@ int main(int argc, char** argv)
 		progress.Report(double(i + 1) / cases.size(), c.name);
 	}
 	WriteText(opt.out + "/stepping_error.svg",
-	          LinePlot(errorSeries, "Fixed stepping: how late it finds the first contact", "time step (s)", "delay (s)", true));
+	          LinePlot(errorSeries, "Fixed stepping: how late it finds the first contact", "time step (s)",
+	                   "delay of the first overlapping step (s)", true, true));
 	Json summary;
 	summary["demo"] = "b2a_demo_collision";
 	summary["quick"] = opt.quick;

@@ -7,6 +7,7 @@
 #include "b2analytic/b2analytic.h"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <vector>
@@ -36,15 +37,113 @@ Json Vec(Vec2 v)
 	return Json::array({v.x, v.y});
 }
 
-// Picture of a case: particles filled, rescaled outlines dashed, contact point and normal.
+// The outline of a posed shape at a level where it crosses the square of half-size `half` about
+// `centre` (world), sampled densely there: a first pass over the polar angles around the centre's
+// finds the stretch that crosses the square, a second samples that stretch (with a margin) finely.
+std::vector<Vec2> OutlineNear(const Shape& shape, const Pose& pose, double level, Vec2 centre, double half)
+{
+	const Vec2 x = ToBody(pose, centre);
+	const double theta = std::atan2(x.y, x.x);
+	const double spread = std::min(kPi, 3.0 * half / std::max(Length(x), 1e-300));
+	auto near = [&](Vec2 p) { return std::fabs(p.x - centre.x) <= 2.0 * half && std::fabs(p.y - centre.y) <= 2.0 * half; };
+	double lo = 1e300, hi = -1e300;
+	const int coarse = 4000;
+	for (int k = 0; k <= coarse; ++k)
+	{
+		const double t = theta - spread + 2.0 * spread * k / coarse;
+		if (near(ToWorld(pose, shape.SurfacePoint(t, level))))
+		{
+			lo = std::min(lo, t);
+			hi = std::max(hi, t);
+		}
+	}
+	std::vector<Vec2> points;
+	if (!(hi >= lo))
+		return points;
+	const double margin = std::max(0.5 * (hi - lo), 2.0 * spread / coarse);
+	const int fine = 600;
+	for (int k = 0; k <= fine; ++k)
+		points.push_back(ToWorld(pose, shape.SurfacePoint(lo - margin + (hi - lo + 2.0 * margin) * k / fine, level)));
+	return points;
+}
+
+// The picture's styles: A blue, B orange, each rescaled outline dashed in its particle's colour.
+const Style kA{palette::blue, palette::blue, 1.5, "", 0.3}, kB{palette::orange, palette::vermillion, 1.5, "", 0.45};
+const Style kRescaledA{"none", palette::blue, 1.5, "6,4", 1.0}, kRescaledB{"none", palette::vermillion, 1.5, "6,4", 1.0};
+const Style kNormal{"none", palette::black, 2.0, "", 1.0}, kContact{palette::black, "none", 1.0, "", 1.0};
+const Style kPaper{palette::green, "none", 1.0, "", 1.0};
+
+// The top-left pixel corner of a `size` square in a corner of the band between pixel rows y0
+// and y1 that the fewest outline points fall into: where a magnified view hides the least.
+Vec2 InsetCorner(const SvgCanvas& svg, const std::vector<std::vector<Vec2>>& outlines, double size, double y0, double y1)
+{
+	const Vec2 corners[] = {{12.0, y1 - size - 4.0}, {svg.Width() - size - 12.0, y1 - size - 4.0}, {12.0, y0 + 4.0},
+	                        {svg.Width() - size - 12.0, y0 + 4.0}};
+	Vec2 best = corners[0];
+	size_t fewest = ~size_t(0);
+	for (Vec2 c : corners)
+	{
+		size_t inside = 0;
+		for (const auto& outline : outlines)
+			for (Vec2 p : outline)
+			{
+				const Vec2 q = svg.PixelOf(p);
+				inside += q.x >= c.x - 8.0 && q.x <= c.x + size + 8.0 && q.y >= c.y - 8.0 && q.y <= c.y + size + 8.0;
+			}
+		if (inside < fewest)
+		{
+			fewest = inside;
+			best = c;
+		}
+	}
+	return best;
+}
+
+// A magnified view of the contact point and the paper's point (apart by far less than a pixel of
+// the whole picture), with its own scale bar, at pixel (x, y) of `svg`.
+void DrawInset(SvgCanvas& svg, const Case& c, const LevelResult& r, double levelA, double levelB, Vec2 at, double size)
+{
+	const double x = at.x, y = at.y;
+	const Vec2 centre = 0.5 * (r.point + c.paperPoint);
+	const double half = std::max(2.5 * Length(r.point - c.paperPoint), 1e-9 * Length(r.point));
+	SvgCanvas inset(centre - Vec2(half, half), centre + Vec2(half, half), size);
+	inset.Polyline(OutlineNear(*c.a, c.pa, levelA, centre, half), kRescaledA);
+	inset.Polyline(OutlineNear(*c.b, c.pb, levelB, centre, half), {"none", palette::vermillion, 1.5, "", 1.0});
+	inset.Dot(c.paperPoint, 5.0, palette::green);
+	inset.Dot(r.point, 5.0, palette::black);
+	const double bar = RoundLength(0.4 * half);
+	inset.ScaleBar(10.0, size - 8.0, bar, LengthLabel(bar, "mm"));
+	inset.Label(8.0, 16.0, "magnified around the contact", 12);
+	svg.Embed(inset, x, y);
+	// Where the view is: a ring around the point in the whole picture.
+	const Vec2 ring = svg.PixelOf(r.point);
+	svg.Label(ring.x + 10.0, ring.y + 18.0, "magnified", 11);
+	svg.Circle(r.point, 8.0 / svg.Pixels(1.0), {"none", palette::black, 1.0, "", 1.0});
+}
+
+// Picture of a case: particles filled, rescaled outlines dashed, contact point and normal, a key
+// and a scale bar; for the paper's 1000:1 case also the paper's point, in a magnified view.
 void Draw(const Case& c, const LevelResult& r, const std::string& path)
 {
 	const bool common = c.mode == "common";
+	const bool paper = c.paperLevel > 0.0;
 	// Outlines: A at the level found (common: both at C; scale_a: A at its level, B as is).
 	const double levelA = r.level * (common ? c.a->SurfaceLevel() : 1.0);
 	const double levelB = common ? r.level * c.b->SurfaceLevel() : c.b->SurfaceLevel();
 	std::vector<std::vector<Vec2>> shapes = {Outline(*c.a, c.pa), Outline(*c.b, c.pb), Outline(*c.a, c.pa, levelA),
 	                                         Outline(*c.b, c.pb, levelB)};
+	std::vector<KeyEntry> key = {{KeyEntry::Kind::area, kA, "particle A"}, {KeyEntry::Kind::area, kB, "particle B"}};
+	if (common)
+	{
+		key.push_back({KeyEntry::Kind::line, kRescaledA, "A rescaled to the common level"});
+		key.push_back({KeyEntry::Kind::line, kRescaledB, "B rescaled to the common level"});
+	}
+	else
+		key.push_back({KeyEntry::Kind::line, kRescaledA, "A rescaled to touch B"});
+	key.push_back({KeyEntry::Kind::dot, kContact, "contact point"});
+	key.push_back({KeyEntry::Kind::arrow, kNormal, "normal, from A to B"});
+	if (paper)
+		key.push_back({KeyEntry::Kind::dot, kPaper, "the paper's point"});
 	Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
 	for (const auto& s : shapes)
 		for (Vec2 p : s)
@@ -52,33 +151,39 @@ void Draw(const Case& c, const LevelResult& r, const std::string& path)
 			lo = Vec2(std::min(lo.x, p.x), std::min(lo.y, p.y));
 			hi = Vec2(std::max(hi.x, p.x), std::max(hi.y, p.y));
 		}
-	const double pad = 0.08 * std::max(hi.x - lo.x, hi.y - lo.y);
-	lo = lo - Vec2(pad, pad);
-	hi = hi + Vec2(pad, 3.0 * pad);
-	SvgCanvas svg(lo, hi, 640.0);
-	svg.Polygon(shapes[0], {"#4e79a7", "#2b4a6f", 1.5, "", 0.45});
-	svg.Polygon(shapes[1], {"#f28e2b", "#8c4d10", 1.5, "", 0.45});
-	svg.Polygon(shapes[2], {"none", "#2b4a6f", 1.5, "6,4", 1.0});
-	svg.Polygon(shapes[3], {"none", "#8c4d10", 1.5, "6,4", 1.0});
-	svg.Dot(c.pa.p, 3.0, "#2b4a6f");
-	svg.Dot(c.pb.p, 3.0, "#8c4d10");
-	const double arrow = 0.12 * (hi.x - lo.x);
-	svg.Arrow(r.point, r.point + arrow * r.normal, {"none", "#c0392b", 2.0, "", 1.0});
-	if (c.paperLevel > 0.0)
-		svg.Dot(c.paperPoint, 4.0, "#27ae60");
-	svg.Dot(r.point, 4.0, "#c0392b");
+	// Around the outlines: a margin, a band on top for the text, one below for the key and the
+	// scale bar.
+	const double pixelWidth = 720.0, pad = 0.06 * std::max(hi.x - lo.x, hi.y - lo.y);
+	const double perUnit = pixelWidth / (hi.x - lo.x + 2.0 * pad);
+	const double top = 90.0 / perUnit, bottom = (SvgCanvas::KeySize(key).y + 16.0) / perUnit;
+	SvgCanvas svg(lo - Vec2(pad, pad + bottom), hi + Vec2(pad, pad + top), pixelWidth);
+	svg.Polygon(shapes[0], kA);
+	svg.Polygon(shapes[1], kB);
+	svg.Polygon(shapes[2], kRescaledA);
+	svg.Polygon(shapes[3], kRescaledB);
+	svg.Dot(c.pa.p, 3.0, palette::blue);
+	svg.Dot(c.pb.p, 3.0, palette::vermillion);
+	svg.Arrow(r.point, r.point + 0.12 * (hi.x - lo.x) * r.normal, kNormal);
+	svg.Dot(r.point, 4.0, palette::black);
 	char line[256];
 	std::snprintf(line, sizeof(line), "%s: level %.10g at (%.6f, %.6f), %s", c.mode.c_str(), r.level, r.point.x, r.point.y,
 	              MethodName(r.method));
-	svg.Label(10, 20, c.name, 16);
-	svg.Label(10, 40, line, 13);
-	if (c.paperLevel > 0.0)
+	svg.Label(10, 22, c.name, 16);
+	svg.Label(10, 41, c.description, 12, "#333333");
+	svg.Label(10, 60, line, 13);
+	if (paper)
 	{
-		std::snprintf(line, sizeof(line), "paper (green dot): %.6g at (%.4f, %.4f)", c.paperLevel, c.paperPoint.x, c.paperPoint.y);
-		svg.Label(10, 58, line, 13, "#27ae60");
+		std::snprintf(line, sizeof(line), "the paper: %.6g at (%.4f, %.4f)", c.paperLevel, c.paperPoint.x, c.paperPoint.y);
+		svg.Label(10, 78, line, 13, palette::green);
+		const double keyTop = svg.Height() - SvgCanvas::KeySize(key).y - 16.0;
+		DrawInset(svg, c, r, levelA, levelB, InsetCorner(svg, shapes, 250.0, 90.0, keyTop), 250.0);
 	}
 	else if (c.ownPoses)
-		svg.Label(10, 58, "poses: ours (the paper's table is missing)", 13, "#555");
+		svg.Label(10, 78, "poses: ours (the paper's table is missing)", 13, "#555555");
+	const Vec2 keySize = SvgCanvas::KeySize(key);
+	svg.Key(8.0, svg.Height() - keySize.y - 8.0, key);
+	const double bar = RoundLength(0.2 * (hi.x - lo.x));
+	svg.ScaleBar(svg.Width() - svg.Pixels(bar) - 20.0, svg.Height() - 10.0, bar, LengthLabel(bar, "mm"));
 	WriteText(path, svg.Finish());
 }
 } // namespace

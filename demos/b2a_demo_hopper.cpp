@@ -3,6 +3,7 @@
 #include "common/DemoCommon.h"
 #include "common/GranularScene.h"
 #include "common/Plot.h"
+#include "common/Svg.h"
 
 #include <algorithm>
 #include <chrono>
@@ -114,11 +115,15 @@ int main(int argc, char** argv)
 	const double packingFraction = scene.PackingFraction();
 	const Energies packed = scene.ComputeEnergies();
 
-	// 2. Discharge: open the outlet, count what leaves, take snapshots.
-	scene.OpenOutlet();
+	// 2. Discharge: open the outlet, count what leaves, take snapshots (those at time 0 just
+	//    before the gate goes, so that they show it closed).
 	const double t0 = scene.Time();
 	std::sort(snapshots.begin(), snapshots.end());
 	size_t nextSnapshot = 0;
+	for (; nextSnapshot < snapshots.size() && snapshots[nextSnapshot] < 0.5 * config.dt; ++nextSnapshot)
+		scene.WriteSnapshot(opt.out + "/snapshot_" + TimeTag(snapshots[nextSnapshot]) + ".svg", "hopper discharge", t0,
+		                    "(the gate about to open)");
+	scene.OpenOutlet();
 	std::vector<double> times, counts;
 	std::ofstream csv(opt.out + "/discharge.csv");
 	csv << "time_s,discharged\n";
@@ -132,8 +137,8 @@ int main(int argc, char** argv)
 		const double t = scene.Time() - t0;
 		while (nextSnapshot < snapshots.size() && t >= snapshots[nextSnapshot] - 0.5 * config.dt)
 		{
-			scene.WriteSnapshot(opt.out + "/snapshot_" + TimeTag(snapshots[nextSnapshot]) + ".svg",
-			                    "hopper discharge, t = " + TimeTag(snapshots[nextSnapshot]) + " s after opening");
+			scene.WriteSnapshot(opt.out + "/snapshot_" + TimeTag(snapshots[nextSnapshot]) + ".svg", "hopper discharge", t0,
+			                    "after the outlet opened");
 			++nextSnapshot;
 		}
 		if (step % 20 == 0)
@@ -161,15 +166,15 @@ int main(int argc, char** argv)
 		++step;
 	}
 	const double tEnd = scene.Time() - t0;
-	scene.WriteSnapshot(opt.out + "/snapshot_final.svg", "hopper discharge, final state");
+	scene.WriteSnapshot(opt.out + "/snapshot_final.svg", "hopper discharge, final state", t0, "after the outlet opened");
 	times.push_back(tEnd);
 	counts.push_back(scene.Discharged());
 	csv << tEnd << "," << scene.Discharged() << "\n";
 	csv.close();
 	WriteText(opt.out + "/discharge.svg",
-	          LinePlot({{"discharged particles", "#c0392b", times, counts, false}},
-	                   "Particles discharged through an outlet of " + Short(outletWidths) + " particle widths", "time after opening (s)",
-	                   "particles discharged"));
+	          LinePlot({{"discharged particles", palette::blue, times, counts, false}},
+	                   "Particles discharged through an outlet of " + Short(outletWidths) + " particle widths",
+	                   "time after the outlet opened (s)", "particles discharged (count)"));
 
 	const double runSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
 	Json summary = scene.SummaryHead("b2a_demo_hopper", opt);

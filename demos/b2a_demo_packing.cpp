@@ -3,6 +3,7 @@
 #include "common/DemoCommon.h"
 #include "common/GranularScene.h"
 #include "common/Plot.h"
+#include "common/Svg.h"
 
 #include <chrono>
 #include <cmath>
@@ -48,7 +49,7 @@ int main(int argc, char** argv)
 	const double duration = opt.Number("--duration", opt.quick ? 0.5 : 1.0, 0.01, 100.0);
 
 	GranularScene scene(config);
-	scene.WriteSnapshot(opt.out + "/initial.svg", "random packing: initial state");
+	scene.WriteSnapshot(opt.out + "/initial.svg", "random packing, initial state");
 	const Energies e0 = scene.ComputeEnergies();
 	std::vector<double> t, translational, rotational, potential, total;
 	std::ofstream csv(opt.out + "/energies.csv");
@@ -86,13 +87,13 @@ int main(int argc, char** argv)
 	}
 	csv.close();
 	const Energies end = scene.ComputeEnergies();
-	scene.WriteSnapshot(opt.out + "/final.svg", "random packing: final state");
+	scene.WriteSnapshot(opt.out + "/final.svg", "random packing, final state");
 	WriteText(opt.out + "/energies.svg",
-	          LinePlot({{"translational", "#4e79a7", t, translational, false},
-	                    {"rotational", "#f28e2b", t, rotational, false},
-	                    {"potential", "#59a14f", t, potential, false},
-	                    {"total", "#333333", t, total, false}},
-	                   "Energies of the packing (g mm^2/s^2)", "time (s)", "energy", true));
+	          LinePlot({{"translational", palette::blue, t, translational, false},
+	                    {"rotational", palette::vermillion, t, rotational, false},
+	                    {"potential", palette::green, t, potential, false},
+	                    {"total", palette::black, t, total, false}},
+	                   "Energies of the packing", "time (s)", "energy (g mm²/s² = 10⁻⁹ J)", true));
 
 	const double weight = scene.Weight();
 	const double kinetic = end.translational + end.rotational;

@@ -110,7 +110,7 @@ inline SupportPoint SuperSupport(const RefShape& s, LD L, V d)
 }
 
 /// The heart's level-L radius along the unit body direction (ux, uy): w = r^{1/3} solves
-/// w⁶ − k w⁵ = L with k = cbrt(ux² uy³) (one positive root, METHOD.md). From w₀ = |k| + L^{1/6}
+/// w⁶ − k w⁵ = L with k = cbrt(ux² uy³) (one positive root, docs/method.md, "Shape functions and levels"). From w₀ = |k| + L^{1/6}
 /// (`root6` = L^{1/6}), where the left side is ≥ L, Newton decreases monotonically: the function
 /// is convex for w > 2k/3, and the root exceeds k.
 inline LD HeartRadius(LD ux, LD uy, LD L, LD root6)

@@ -2,7 +2,7 @@
 // and for what a Box2D user would do instead, measured side by side in one process.
 #include "BenchCommon.h"
 #include "PairReference.h"
-#include "common/Plot.h"
+#include "PairsPlot.h"
 
 #include "b2analytic/b2analytic.h"
 
@@ -707,28 +707,13 @@ int main(int argc, char** argv)
 	text += md.Markdown();
 	WriteText(opt.out + "/pairs.md", text);
 
-	const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
-	                         "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aa4499", "#44aa99", "#882255",
-	                         "#ddcc77", "#332288"}; // one colour per method (at most 16 rows per family)
 	for (const Family& f : families)
 	{
-		std::vector<Series> series;
+		std::vector<bench::PairsPlotPoint> points;
 		for (const Row& r : rows)
-		{
-			if (r.family != f.name || r.errors.compared == 0)
-				continue;
-			Series s;
-			s.name = r.method;
-			s.colour = colours[series.size() % (sizeof colours / sizeof colours[0])];
-			s.points = true;
-			s.x = {std::log10(r.ns)};
-			// Exact answers still differ by rounding: plot at least 1e-17 so that they show.
-			s.y = {std::fmax(r.errors.point, 1e-17)};
-			series.push_back(s);
-		}
-		WriteText(opt.out + "/pairs_" + f.name + ".svg",
-		          LinePlot(series, f.name + ": time against contact point error", "log10 ns per query",
-		                   "max point error / size", true));
+			if (r.family == f.name && r.errors.compared > 0)
+				points.push_back({r.method, r.ns, r.errors.point});
+		WriteText(opt.out + "/pairs_" + f.name + ".svg", bench::PairsPlot(f.name, points));
 	}
 
 	const auto find = [&](const std::string& fam, const std::string& method) -> const Row* {

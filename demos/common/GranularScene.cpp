@@ -335,30 +335,46 @@ int GranularScene::ParticlesOverOutlet(double height) const
 	return n;
 }
 
-void GranularScene::WriteSnapshot(const std::string& path, const std::string& title) const
+void GranularScene::WriteSnapshot(const std::string& path, const std::string& title, double timeOrigin,
+                                  const std::string& clockNote) const
 {
-	const double w = 0.5 * m_config.boxWidth;
+	const double moving = 5.0; // mm/s: faster particles are drawn as moving
+	const Style rest{palette::blue, "#1f1f1f", 0.4, "", 0.85}, move{palette::orange, "#1f1f1f", 0.4, "", 0.85};
+	const Style wall{"none", "#333333", 3.0, "", 1.0}, gate{"none", palette::vermillion, 3.0, "", 1.0};
+	std::vector<KeyEntry> key = {{KeyEntry::Kind::area, rest, "at rest (below 5 mm/s)"},
+	                             {KeyEntry::Kind::area, move, "moving"},
+	                             {KeyEntry::Kind::line, wall, "walls and floor"}};
+	if (m_gate)
+		key.push_back({KeyEntry::Kind::line, gate, "gate over the outlet (closed)"});
+	// The picture: the container from below the floor (where discharged particles fall) to above
+	// the pile, and a band on top for the title and the key, beside each other.
+	const double w = 0.5 * m_config.boxWidth, pixelWidth = 720.0;
 	const double top = std::max(PileHeight() + 2.0 * m_config.width, 0.3 * m_config.boxWidth);
 	const double bottom = -3.0 * m_config.width;
-	SvgCanvas svg(Vec2(-w - 2.0, bottom), Vec2(w + 2.0, top + 0.15 * (top - bottom)), 720.0);
-	const Style wall{"none", "#333333", 3.0, "", 1.0};
+	const double perMm = pixelWidth / (2.0 * w + 4.0);
+	const double band = std::max(70.0, SvgCanvas::KeySize(key).y + 14.0) / perMm;
+	SvgCanvas svg(Vec2(-w - 2.0, bottom), Vec2(w + 2.0, top + band), pixelWidth);
 	const double o = 0.5 * m_config.outletWidth;
-	svg.Polyline({Vec2(-w, top), Vec2(-w, 0.0), Vec2(-o, 0.0)}, wall);
+	for (size_t i = 0; i < m_particles.size(); ++i)
+		svg.Polygon(ParticleOutline(i), m_particles[i]->GetLinearVelocity().Length() > moving ? move : rest);
+	svg.Polyline({Vec2(-w, top), Vec2(-w, 0.0), Vec2(-o, 0.0)}, wall); // over the particles that touch them
 	svg.Polyline({Vec2(o, 0.0), Vec2(w, 0.0), Vec2(w, top)}, wall);
 	if (m_gate)
-		svg.Polyline({Vec2(-o, 0.0), Vec2(o, 0.0)}, {"none", "#999999", 2.0, "4,3", 1.0});
-	for (size_t i = 0; i < m_particles.size(); ++i)
-	{
-		// Colour by speed: resting particles blue, moving ones orange.
-		const double speed = m_particles[i]->GetLinearVelocity().Length();
-		const bool moving = speed > 5.0; // mm/s
-		svg.Polygon(ParticleOutline(i),
-		            {moving ? "#f28e2b" : "#4e79a7", "#1f1f1f", 0.4, "", 0.85});
-	}
-	svg.Label(10, 20, title, 15);
-	char line[160];
-	std::snprintf(line, sizeof(line), "t = %.3f s, %d particles in the container, %d discharged", m_time, Remaining(), m_discharged);
-	svg.Label(10, 38, line, 12);
+		svg.Polyline({Vec2(-o, 0.0), Vec2(o, 0.0)}, gate);
+
+	// One clock: the scene's time from `timeOrigin`, as the caller names it.
+	char clock[160];
+	std::snprintf(clock, sizeof(clock), "t = %.3f s%s%s", m_time - timeOrigin, clockNote.empty() ? "" : " ", clockNote.c_str());
+	std::string counts = std::to_string(Remaining()) + " particles in the container";
+	if (m_discharged > 0 || (m_config.outletWidth > 0.0 && !m_gate)) // an outlet, open
+		counts += ", " + std::to_string(m_discharged) + " discharged";
+	svg.Label(10, 22, title, 15);
+	svg.Label(10, 42, clock, 13);
+	svg.Label(10, 60, counts, 12);
+	svg.Key(svg.Width() - SvgCanvas::KeySize(key).x - 8.0, 6.0, key);
+	// A scale bar under the right-hand floor, where nothing falls.
+	const double length = RoundLength(0.25 * m_config.boxWidth);
+	svg.ScaleBar(svg.PixelOf(Vec2(w - length, 0.0)).x, svg.Height() - 10.0, length, LengthLabel(length, "mm"));
 	WriteText(path, svg.Finish());
 }
 

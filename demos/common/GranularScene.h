@@ -16,7 +16,7 @@
 namespace b2a::demo
 {
 
-/// A granular scene in millimetres (DESIGN's unit advice: 1 length unit = 1 mm, g = 9810 mm/s²,
+/// A granular scene in millimetres (docs/design.md, "Units": 1 length unit = 1 mm, g = 9810 mm/s²,
 /// small steps, raised restitution thresholds). Masses are in grams (density in g/mm²).
 struct GranularConfig
 {
@@ -116,8 +116,11 @@ public:
 	double KineticEnergyNearOutlet(double radius) const;
 	/// Particles whose centre lies over the outlet, within `height` above the floor.
 	int ParticlesOverOutlet(double height) const;
-	/// Write an SVG snapshot of the container and the particles.
-	void WriteSnapshot(const std::string& path, const std::string& title) const;
+	/// Write an SVG snapshot of the container and the particles, with a key and a scale bar. Its
+	/// one clock reads the scene's time from `timeOrigin`, followed by `clockNote` (e.g. "after the
+	/// outlet opened").
+	void WriteSnapshot(const std::string& path, const std::string& title, double timeOrigin = 0.0,
+	                   const std::string& clockNote = "") const;
 	/// The configuration.
 	const GranularConfig& Config() const { return m_config; }
 	/// The start of a demo's summary: demo name, options, particles and container.

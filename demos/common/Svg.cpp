@@ -1,6 +1,7 @@
 // b2analytic demos: SVG writer.
 #include "Svg.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -117,6 +118,103 @@ void SvgCanvas::Label(double x, double y, const std::string& text, double size, 
 {
 	m_body += "<text x=\"" + Num(x) + "\" y=\"" + Num(y) + "\" font-family=\"sans-serif\" font-size=\"" + Num(size) +
 	          "\" fill=\"" + colour + "\">" + Escape(text) + "</text>\n";
+}
+
+double TextWidth(const std::string& text, double size)
+{
+	int chars = 0;
+	for (unsigned char c : text)
+		chars += (c & 0xC0) != 0x80; // code points, not bytes
+	return 0.6 * size * chars;
+}
+
+double RoundLength(double most)
+{
+	if (!(most > 0.0) || !std::isfinite(most))
+		return 1.0;
+	const double power = std::pow(10.0, std::floor(std::log10(most)));
+	const double lead = most / power;
+	return (lead >= 5.0 ? 5.0 : lead >= 2.0 ? 2.0 : 1.0) * power;
+}
+
+std::string LengthLabel(double length, const std::string& unit)
+{
+	char b[64];
+	std::snprintf(b, sizeof(b), "%g %s", length, unit.c_str());
+	return b;
+}
+
+void SvgCanvas::ScaleBar(double x, double y, double length, const std::string& label)
+{
+	const double w = Pixels(length);
+	char b[320];
+	std::snprintf(b, sizeof(b),
+	              "<path d=\"M%s,%s v6 h%s v-6\" fill=\"none\" stroke=\"black\" stroke-width=\"1.5\"/>\n",
+	              Num(x).c_str(), Num(y - 6.0).c_str(), Num(w).c_str());
+	m_body += b;
+	// The label centred over the bar, but inside the picture where the bar is short.
+	const double half = 0.5 * TextWidth(label, 12.0) + 2.0;
+	const double centre = std::min(std::max(x + 0.5 * w, half), m_width - half);
+	m_body += "<text x=\"" + Num(centre) + "\" y=\"" + Num(y - 10.0) +
+	          "\" font-family=\"sans-serif\" font-size=\"12\" text-anchor=\"middle\">" + Escape(label) + "</text>\n";
+}
+
+namespace
+{
+constexpr double kKeyRow = 18.0, kKeyFont = 12.0, kKeySample = 28.0;
+} // namespace
+
+Vec2 SvgCanvas::KeySize(const std::vector<KeyEntry>& entries)
+{
+	double text = 0.0;
+	for (const KeyEntry& e : entries)
+		text = std::max(text, TextWidth(e.text, kKeyFont));
+	return {8.0 + kKeySample + 8.0 + text + 8.0, 6.0 + kKeyRow * entries.size()};
+}
+
+void SvgCanvas::Key(double x, double y, const std::vector<KeyEntry>& entries)
+{
+	const Vec2 size = KeySize(entries);
+	m_body += "<rect x=\"" + Num(x) + "\" y=\"" + Num(y) + "\" width=\"" + Num(size.x) + "\" height=\"" + Num(size.y) +
+	          "\" fill=\"white\" fill-opacity=\"0.9\" stroke=\"#bbbbbb\" stroke-width=\"1\"/>\n";
+	for (size_t k = 0; k < entries.size(); ++k)
+	{
+		const KeyEntry& e = entries[k];
+		const double cy = y + 3.0 + kKeyRow * (k + 0.5), x0 = x + 8.0, x1 = x0 + kKeySample;
+		std::string sample;
+		switch (e.kind)
+		{
+		case KeyEntry::Kind::area:
+			sample = "<rect x=\"" + Num(x0 + 6.0) + "\" y=\"" + Num(cy - 6.0) + "\" width=\"16\" height=\"12\" rx=\"3\"" +
+			         Attributes(e.style) + "/>\n";
+			break;
+		case KeyEntry::Kind::line:
+			sample = "<line x1=\"" + Num(x0) + "\" y1=\"" + Num(cy) + "\" x2=\"" + Num(x1) + "\" y2=\"" + Num(cy) + "\"" +
+			         Attributes(e.style) + "/>\n";
+			break;
+		case KeyEntry::Kind::dot:
+			sample = "<circle cx=\"" + Num(0.5 * (x0 + x1)) + "\" cy=\"" + Num(cy) + "\" r=\"4\" fill=\"" + e.style.fill + "\"/>\n";
+			break;
+		case KeyEntry::Kind::arrow:
+			sample = "<line x1=\"" + Num(x0) + "\" y1=\"" + Num(cy) + "\" x2=\"" + Num(x1 - 7.0) + "\" y2=\"" + Num(cy) +
+			         "\" stroke=\"" + e.style.stroke + "\" stroke-width=\"" + Num(e.style.width) + "\"/>\n<polygon points=\"" +
+			         Num(x1) + "," + Num(cy) + " " + Num(x1 - 8.0) + "," + Num(cy - 4.0) + " " + Num(x1 - 8.0) + "," + Num(cy + 4.0) +
+			         "\" fill=\"" + e.style.stroke + "\"/>\n";
+			break;
+		}
+		m_body += sample;
+		m_body += "<text x=\"" + Num(x1 + 8.0) + "\" y=\"" + Num(cy + 4.0) + "\" font-family=\"sans-serif\" font-size=\"" +
+		          Num(kKeyFont) + "\">" + Escape(e.text) + "</text>\n";
+	}
+}
+
+void SvgCanvas::Embed(const SvgCanvas& inset, double x, double y)
+{
+	m_body += "<svg x=\"" + Num(x) + "\" y=\"" + Num(y) + "\" width=\"" + Num(inset.m_width) + "\" height=\"" +
+	          Num(inset.m_height) + "\" viewBox=\"0 0 " + Num(inset.m_width) + " " + Num(inset.m_height) + "\" overflow=\"hidden\">\n" +
+	          inset.m_body + "</svg>\n";
+	m_body += "<rect x=\"" + Num(x) + "\" y=\"" + Num(y) + "\" width=\"" + Num(inset.m_width) + "\" height=\"" + Num(inset.m_height) +
+	          "\" fill=\"none\" stroke=\"#333333\" stroke-width=\"1\"/>\n";
 }
 
 std::string SvgCanvas::Finish() const

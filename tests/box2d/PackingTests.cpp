@@ -81,7 +81,7 @@ TEST_CASE("a random packing of 200 superellipses in a box settles to mechanical 
 
 TEST_CASE("a 2 x 0.66 mm ellipse in a millimetre scene lands, rocks down onto its side, and rests")
 {
-	// DESIGN's unit advice: 1 length unit = 1 mm, gravity 9810 mm/s², a step small enough that
+	// docs/design.md, "Units": 1 length unit = 1 mm, gravity 9810 mm/s², a step small enough that
 	// nothing moves more than 2 units per step, and the restitution threshold raised from 1 unit/s
 	// (1 mm/s here) to Box2D's default in metres, 1000 mm/s. The paper's ellipse (major axis 2 mm,
 	// minor 0.66 mm) falls 10 mm.

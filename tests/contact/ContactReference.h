@@ -1,7 +1,7 @@
 // b2analytic contact tests: independent long-double references.
 //
 // Nothing here calls a contact solver of the library, nor its shapes' level, radius or sample
-// functions: every shape is described again from its formula (METHOD.md) and evaluated in
+// functions: every shape is described again from its formula (docs/method.md) and evaluated in
 // long double (64-bit mantissa, eps ≈ 1.1e-19, about 1000 times finer than double), so the
 // references are exact to far below the tolerances the tests assert on double-precision results.
 // The only things taken from the library are the poses' stored cosine and sine (so that the
@@ -130,7 +130,7 @@ struct RefShape
 	/// The particle's own level (1 for superellipses, α for the heart).
 	LD Own() const { return kind == Kind::heart ? alpha : 1.0L; }
 
-	/// λ(x): |x/a|^n + |y/b|^m, or the heart's α(x) = x² + y² − cbrt(x² y³) (METHOD.md).
+	/// λ(x): |x/a|^n + |y/b|^m, or the heart's α(x) = x² + y² − cbrt(x² y³) (docs/method.md, "Shape functions and levels").
 	LD Level(V x) const
 	{
 		if (kind == Kind::heart)
@@ -270,7 +270,7 @@ inline LD PowZ(LD x, LD e) { return e == 0.0L ? 1.0L : PowL(x, e); }
 /// Sign of x as −1, 0 or 1.
 inline LD Sign(LD x) { return x > 0.0L ? 1.0L : (x < 0.0L ? -1.0L : 0.0L); }
 
-/// Body-frame derivatives from the formulas (METHOD.md):
+/// Body-frame derivatives from the formulas (docs/method.md, "Shape functions and levels"):
 ///  - superellipse λ = |x/a|^n + |y/b|^m: λ_x = (n/a) sgn(x) |x/a|^{n−1}, λ_xx = n(n−1)/a² |x/a|^{n−2},
 ///    λ_xy = 0 (likewise in y);
 ///  - heart λ = x² + y² − |x|^{2/3} y: λ_x = 2x − (2/3) sgn(x) |x|^{−1/3} y, λ_y = 2y − |x|^{2/3},

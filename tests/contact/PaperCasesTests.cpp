@@ -1,4 +1,4 @@
-// The paper's cases (METHOD.md): the fully specified 1000:1 ellipses, and superellipse pairs of
+// The paper's cases (docs/method.md, "The paper's results"): the fully specified 1000:1 ellipses, and superellipse pairs of
 // its Figure 1 kind, whose poses the paper does not give.
 //
 // References (ContactReference.h, long double): Perram–Wertheim for the ellipses' common level;

@@ -61,7 +61,7 @@ inline long double SuperellipseLevelRef(Vec2 p, double a, double b, double n, do
 	return zeta > 0.0 ? std::pow(f, 1.0L / zeta) : f;
 }
 
-/// Level of the heart, α(x) = x² + y² − cbrt(x² y³) (METHOD.md), in long double.
+/// Level of the heart, α(x) = x² + y² − cbrt(x² y³) (docs/method.md, "Shape functions and levels"), in long double.
 inline long double HeartLevelRef(Vec2 p)
 {
 	const long double x = p.x, y = p.y;

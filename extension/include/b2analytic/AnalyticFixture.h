@@ -1,36 +1,9 @@
 // b2analytic: analytic fixtures on Box2D bodies.
 //
-// How it works (and why this way):
-//  - An analytic fixture is an ordinary b2Fixture whose b2Shape is an internal subclass of
-//    b2PolygonShape. Its virtual functions answer for the true shape: ComputeAABB gives the
-//    tight AABB (the broad phase works on it), ComputeMass the analytic area, centroid and
-//    inertia (so the body's mass data is exact), TestPoint and RayCast the exact answers (so
-//    b2World::RayCast, QueryAABB + TestPoint and b2Fixture::RayCast work unchanged).
-//  - Its polygon vertices are a convex polygon inscribed in the true shape (up to 7 surface
-//    points moved inwards by Box2D's polygon skin; for concave shapes such as the heart, their
-//    hull with the vertices pulled in until the rounded polygon lies inside). Box2D uses them
-//    only for continuous collision (b2TimeOfImpact) and sensors (b2TestOverlap). An inscribed
-//    proxy never reaches the time of impact before the true shape does, so when Box2D's TOI
-//    solver stops a fast particle, the true shapes already touch and the contact below pushes
-//    them apart: particles do not tunnel through thin static walls, nor through bullets. (With
-//    a proxy reaching outside, Box2D would drop the time of impact: it discards one whose
-//    contact is not touching.) The true shape may be inside a wall by up to its proxy's gap
-//    when stopped. Between two non-bullet dynamic bodies Box2D has no continuous collision:
-//    they do not pass through each other while their relative motion in one step stays below
-//    half the sum of their inscribed radii about their centres (tests/box2d/TunnellingTests.cpp).
-//    Sensors, however, report overlap of the inscribed polygons, slightly less than the truth.
-//  - The narrow phase is replaced by registering our own b2Contact subclass with Box2D's contact
-//    registers (b2Contact::AddType) for (polygon, polygon), (polygon, circle), (edge, polygon)
-//    and (chain, polygon), once, before main() runs. Its Evaluate computes the analytic contact
-//    (ComputeContact between analytic shapes, the separating axis against circles' and polygons'
-//    and edges' true geometry) and converts it into a b2Manifold before Box2D matches point ids,
-//    decides touching and calls the listener. So BeginContact/EndContact/PreSolve/PostSolve,
-//    warm starting and TOI all follow the true shapes and PreSolve stays free for the user.
-//    (The alternative, rewriting the manifold in a PreSolve listener, runs only when proxies
-//    already touch, after Begin/End were decided on the proxies, and takes PreSolve away from
-//    the user; we rejected it.) Pairs of plain Box2D shapes call the very functions Box2D's own
-//    contacts call (b2CollidePolygons and friends), so plain scenes step bit-identically.
-//  - The fixture's and body's user data stay the user's: the analytic data lives in the shape.
+// An analytic fixture is a b2Fixture whose shape is an internal b2PolygonShape subclass answering
+// for the true shape; the library's own b2Contact replaces Box2D's narrow phase for its pairs.
+// Why it is built this way (the proxy polygon, the contact registers, continuous collision,
+// sensors): docs/design.md, section "The Box2D adapter".
 //
 // What is allowed:
 //  - Create analytic fixtures on dynamic, kinematic and static bodies between steps; destroy them

@@ -1,4 +1,4 @@
-// b2analytic: the level solvers (common level and one-sided scale) of METHOD.md.
+// b2analytic: the level solvers (common level and one-sided scale) of docs/method.md ("Common-level contact", "Grid method").
 #pragma once
 
 #include "b2analytic/ContactResult.h"
