@@ -1,5 +1,6 @@
 // b2analytic demo: collision processes (the paper's Figures 4 and 8): the exact first-contact
 // time and point from the time-of-impact solver, next to what fixed time stepping finds.
+#include "common/CommandLine.h"
 #include "common/DemoCommon.h"
 #include "common/Plot.h"
 #include "common/Svg.h"
@@ -108,7 +109,7 @@ void Draw(const Case& c, const TimeOfImpactResult& toi, const std::string& path)
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_demo_collision", kHelp);
+	const DemoOptions opt = CommandLine("b2a_demo_collision", kHelp).Parse(argc, argv);
 	Progress progress("b2a_demo_collision");
 	const auto superellipse = MakeSuperellipse(2.0, 4.0, 6.0, 8.0);
 	const auto heart = MakeHeart(1.0);

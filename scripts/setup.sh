@@ -10,6 +10,7 @@ packages=(
 	libeigen3-dev           # small dense linear algebra (Newton's Jacobian)
 	doctest-dev             # unit tests
 	nlohmann-json3-dev      # JSON in and out of the tools, demos and benchmarks
+	libcli11-dev            # command lines of the tools, demos and benchmarks
 )
 
 for arg in "$@"; do
