@@ -141,7 +141,7 @@ int main(int argc, char** argv)
 	const double g = config.gravity;
 
 	// 2. Each outlet: open, discharge, sample the count every 50 steps, fit the steady part.
-	std::ofstream csv(opt.out + "/flow.csv");
+	std::ofstream csv = OpenOutput(opt.out + "/flow.csv");
 	csv << "D_major_axes,D_mm,time_s,discharged\n";
 	Json outletList = Json::array();
 	std::vector<double> Ds, Qs, Q23;

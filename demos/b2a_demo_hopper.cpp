@@ -114,7 +114,7 @@ int main(int argc, char** argv)
 	std::sort(snapshots.begin(), snapshots.end());
 	size_t nextSnapshot = 0;
 	std::vector<double> times, counts;
-	std::ofstream csv(opt.out + "/discharge.csv");
+	std::ofstream csv = OpenOutput(opt.out + "/discharge.csv");
 	csv << "time_s,discharged\n";
 	double lastDischarge = 0.0;
 	int lastCount = 0;

@@ -152,7 +152,7 @@ int main(int argc, char** argv)
 	fig.balance0 = scene.ComputeEnergies().Total();
 	const double energy0 = fig.balance0;
 	double balancePrev = fig.balance0;
-	std::ofstream csv(opt.out + "/energy.csv");
+	std::ofstream csv = OpenOutput(opt.out + "/energy.csv");
 	csv << "step,time_s,kinetic,potential,injected,balance,recycled\n";
 
 	const auto summary = [&](bool finished, const char* stoppedBy) {

@@ -50,7 +50,7 @@ int main(int argc, char** argv)
 	scene.WriteSnapshot(opt.out + "/initial.svg", "random packing: initial state");
 	const Energies e0 = scene.ComputeEnergies();
 	std::vector<double> t, translational, rotational, potential, total;
-	std::ofstream csv(opt.out + "/energies.csv");
+	std::ofstream csv = OpenOutput(opt.out + "/energies.csv");
 	csv << "time_s,translational,rotational,potential,total\n";
 	double released = 0.0, bottomForce = 0.0;
 	int step = 0;

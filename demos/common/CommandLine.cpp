@@ -1,6 +1,8 @@
 // b2analytic demos: the command line of every demo and benchmark.
 #include "CommandLine.h"
 
+#include "OutputRecord.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -141,7 +143,12 @@ DemoOptions CommandLine::Parse(int argc, char** argv)
 	o.name = m_name;
 	o.out = "out/" + m_name;
 	const std::string common = "Common options";
-	m_app.add_option("--out", o.out, "output folder (default out/<program>); created if missing")->type_name("DIR")->group(common);
+	m_app.add_option("--out", o.out,
+	                 "output folder (default out/<program>); created if missing. The files an\n"
+	                 "earlier run of this program wrote there are removed first (listed in\n" +
+	                     std::string("DIR/") + OutputRecord::kFileName + "), nothing else")
+		->type_name("DIR")
+		->group(common);
 	m_app.add_option("--seed", o.seed, "random seed (default 1)")->type_name("N")->transform(UnsignedInteger())->group(common);
 	m_app.add_flag("--quick", o.quick, "reduced run for CI, under a minute")->group(common);
 	m_app.set_help_flag("-h,--help", "this text")->group(common);
@@ -169,6 +176,7 @@ DemoOptions CommandLine::Parse(int argc, char** argv)
 		std::fprintf(stderr, "%s: cannot create output folder '%s': %s\n", m_name.c_str(), o.out.c_str(), ec.message().c_str());
 		std::exit(1);
 	}
+	RecordOutputsIn(o.out, m_name);
 	return o;
 }
 

@@ -92,6 +92,8 @@ public:
 	/// Adds the common options (--out DIR, --seed N, --quick, --help) and reads the arguments. Exits 0
 	/// after printing the help on --help; exits 2 with a message naming the option and the value
 	/// on a bad argument; exits 1 if the output folder (default out/<name>) cannot be created.
+	/// Files the program writes there through WriteText, WriteJson or OpenOutput replace those
+	/// of its earlier run (OutputRecord).
 	DemoOptions Parse(int argc, char** argv);
 
 	/// The CLI11 application, for what Add does not cover.

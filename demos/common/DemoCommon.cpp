@@ -1,16 +1,30 @@
 // b2analytic demos: shared output files and progress.
 #include "DemoCommon.h"
 
+#include "OutputRecord.h"
+
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 
 namespace b2a::demo
 {
 
+std::ofstream OpenOutput(const std::string& path)
+{
+	if (OutputRecord* record = CurrentOutputRecord())
+		record->Add(path); // before writing: the first file clears the program's earlier output
+	std::ofstream f(path);
+	if (!f)
+	{
+		std::fprintf(stderr, "cannot write '%s'\n", path.c_str());
+		std::exit(1);
+	}
+	return f;
+}
+
 void WriteText(const std::string& path, const std::string& text)
 {
-	std::ofstream f(path);
+	std::ofstream f = OpenOutput(path);
 	f << text;
 	f.close();
 	if (!f)

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <fstream>
 #include <string>
 
 namespace b2a::demo
@@ -24,10 +25,15 @@ struct DemoOptions
 using Json = nlohmann::ordered_json;
 
 /// Write `value` as pretty JSON to `path`; exits 1 with a message if the file cannot be written.
+/// Like every writer here, it adds the file to the output folder's record (OutputRecord).
 void WriteJson(const std::string& path, const Json& value);
 
 /// Write text to a file; exits 1 with a message if it cannot be written.
 void WriteText(const std::string& path, const std::string& text);
+
+/// A file opened for writing a little at a time (a CSV filled during the run); exits 1 with a
+/// message if it cannot be created.
+std::ofstream OpenOutput(const std::string& path);
 
 /// Progress on stderr, at most a few lines a second.
 class Progress
