@@ -1,5 +1,6 @@
 // b2analytic demo: hopper flow of 2 x 0.66 mm ellipses through outlets of 6 to 16 major axes
 // (the paper's Figures 14 and 15), and a fit of Beverloo's law Q = C ρ √g (D − k d)^{3/2}.
+#include "common/CommandLine.h"
 #include "common/DemoCommon.h"
 #include "common/GranularScene.h"
 #include "common/Plot.h"
@@ -37,10 +38,6 @@ deep) and measures the early, steady flow, to keep the run to minutes on two cor
 Writes to DIR: summary.json (k, C, r2 and their uncertainties, outlets as {D_mm, Q}, ...),
 flow.csv (D, Q, and the count sampling of each outlet), beverloo.svg (data and fit) and
 packing.svg.
-
-Options:
-  --particles N        particles in the bed (default 4000, quick 500)
-  --outlets D,D,...    outlet widths in major axes (default 6,8,10,12,14,16; quick 4,6,8)
 )";
 
 struct Fit
@@ -83,17 +80,19 @@ Fit LeastSquares(const std::vector<double>& x, const std::vector<double>& y)
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_demo_beverloo", kHelp, {"--particles", "--outlets"});
+	GranularConfig config = BeverlooEllipses();
+	std::vector<double> outlets;
+	CommandLine cli("b2a_demo_beverloo", kHelp);
+	cli.Add("--particles", config.particles, 4000, 500, "N", "particles in the bed (default 4000, quick 500)", WholeNumber(10, 50000));
+	cli.Add("--outlets", outlets, {6, 8, 10, 12, 14, 16}, {4, 6, 8}, "D,D,...",
+	        "outlet widths in major axes (default 6,8,10,12,14,16; quick 4,6,8)", RealNumber(1.0, 39.0));
+	const DemoOptions opt = cli.Parse(argc, argv);
 	const auto wallStart = std::chrono::steady_clock::now();
 	Progress progress("b2a_demo_beverloo");
 
-	GranularConfig config = BeverlooEllipses();
 	config.seed = opt.seed;
 	config.boxWidth = opt.quick ? 30.0 : 80.0;
 	config.boxHeight = 800.0;
-	config.particles = int(opt.Number("--particles", opt.quick ? 500 : 4000, 10, 50000));
-	const std::vector<double> outlets =
-		opt.Numbers("--outlets", opt.quick ? std::vector<double>{4, 6, 8} : std::vector<double>{6, 8, 10, 12, 14, 16}, 1.0, 39.0);
 	for (double D : outlets)
 		if (D * config.width >= config.boxWidth)
 		{
@@ -137,7 +136,7 @@ int main(int argc, char** argv)
 	const double g = config.gravity;
 
 	// 2. Each outlet: open, discharge, sample the count every 50 steps, fit the steady part.
-	std::ofstream csv(opt.out + "/flow.csv");
+	std::ofstream csv = OpenOutput(opt.out + "/flow.csv");
 	csv << "D_major_axes,D_mm,time_s,discharged\n";
 	Json outletList = Json::array();
 	std::vector<double> Ds, Qs, Q23;

@@ -1,5 +1,6 @@
 // b2analytic demo: collision processes (the paper's Figures 4 and 8): the exact first-contact
 // time and point from the time-of-impact solver, next to what fixed time stepping finds.
+#include "common/CommandLine.h"
 #include "common/DemoCommon.h"
 #include "common/PaperCases.h"
 #include "common/Plot.h"
@@ -113,7 +114,7 @@ void Draw(const Case& c, const TimeOfImpactResult& toi, const std::string& path)
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_demo_collision", kHelp);
+	const DemoOptions opt = CommandLine("b2a_demo_collision", kHelp).Parse(argc, argv);
 	Progress progress("b2a_demo_collision");
 	std::vector<Case> cases = PaperCollisionCases();
 	// Step counts over each interval: the paper's 440 for its superellipses, and others.

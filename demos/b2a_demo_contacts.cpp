@@ -1,5 +1,6 @@
 // b2analytic demo: the paper's contact cases (its Figures 2, 3, 6, 7, 9 and 16), solved exactly,
 // with pictures of the particles, their rescaled outlines and the contact points.
+#include "common/CommandLine.h"
 #include "common/DemoCommon.h"
 #include "common/PaperCases.h"
 #include "common/Svg.h"
@@ -190,7 +191,7 @@ void Draw(const Case& c, const LevelResult& r, const std::string& path)
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_demo_contacts", kHelp);
+	const DemoOptions opt = CommandLine("b2a_demo_contacts", kHelp).Parse(argc, argv);
 	Progress progress("b2a_demo_contacts");
 	std::vector<Case> cases = PaperContactCases();
 

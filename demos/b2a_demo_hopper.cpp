@@ -1,5 +1,6 @@
 // b2analytic demo: superellipses packed in a container, then discharged through an outlet of
 // 12 particle widths (the paper's Figure 13): does an arch stop the flow?
+#include "common/CommandLine.h"
 #include "common/DemoCommon.h"
 #include "common/GranularScene.h"
 #include "common/Plot.h"
@@ -33,14 +34,6 @@ an arch after 0.11 s.
 Writes to DIR: summary.json (outlet_width, discharged, arched, flow_stopped_at, ...),
 discharge.csv (time, discharged), discharge.svg (the count against time) and
 snapshot_<t>.svg pictures of the container (moving particles orange, resting blue).
-
-Options:
-  --particles N         number of particles (default 900, quick 160)
-  --outlet-widths K     outlet width in mean particle widths (default 12)
-  --snapshots T,T,...   snapshot times in seconds after the outlet opens (default 0,0.11,0.32)
-  --duration T          seconds of discharge to simulate at most (default 0.6, quick 0.3)
-  --threads N           threads that compute the analytic contacts before each step
-                        (b2a::PrepareContacts; default 1; any N gives the same run, bit for bit)
 )";
 
 std::string TimeTag(double t)
@@ -60,23 +53,26 @@ std::string Short(double v)
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt =
-		ParseDemoOptions(argc, argv, "b2a_demo_hopper", kHelp, {"--particles", "--outlet-widths", "--snapshots", "--duration", "--threads"});
+	GranularConfig config;
+	double outletWidths = 12.0, duration = 0.0;
+	std::vector<double> snapshots = {0.0, 0.11, 0.32};
+	CommandLine cli("b2a_demo_hopper", kHelp);
+	cli.Add("--particles", config.particles, 900, 160, "N", "number of particles (default 900, quick 160)", WholeNumber(1, 20000));
+	cli.Add("--outlet-widths", outletWidths, "K", "outlet width in mean particle widths (default 12)", RealNumber(0.5, 39.0));
+	cli.Add("--snapshots", snapshots, "T,T,...", "snapshot times in seconds after the outlet opens (default 0,0.11,0.32)",
+	        RealNumber(0.0, 100.0));
+	cli.Add("--duration", duration, 0.6, 0.3, "T", "seconds of discharge to simulate at most (default 0.6, quick 0.3)",
+	        RealNumber(0.01, 100.0));
+	cli.Add("--threads", config.threads, "N",
+	        "threads that compute the analytic contacts before each step\n"
+	        "(b2a::PrepareContacts; default 1; any N gives the same run, bit for bit)",
+	        WholeNumber(1, 256));
+	const DemoOptions opt = cli.Parse(argc, argv);
 	const auto wallStart = std::chrono::steady_clock::now();
 	Progress progress("b2a_demo_hopper");
 
-	GranularConfig config;
 	config.seed = opt.seed;
-	config.particles = int(opt.Number("--particles", opt.quick ? 160 : 900, 1, 20000));
-	const double threads = opt.Number("--threads", 1, 1, 256);
-	if (threads != std::floor(threads))
-	{
-		std::fprintf(stderr, "b2a_demo_hopper: option '--threads': '%g' is not a whole number of threads\n", threads);
-		return 2;
-	}
-	config.threads = int(threads);
 	config.boxWidth = opt.quick ? 40.0 : 60.0;
-	const double outletWidths = opt.Number("--outlet-widths", 12.0, 0.5, 39.0);
 	config.outletWidth = outletWidths * config.width;
 	if (config.outletWidth >= config.boxWidth)
 	{
@@ -84,8 +80,6 @@ int main(int argc, char** argv)
 		             config.outletWidth, config.boxWidth);
 		return 2;
 	}
-	std::vector<double> snapshots = opt.Numbers("--snapshots", {0.0, 0.11, 0.32}, 0.0, 100.0);
-	const double duration = opt.Number("--duration", opt.quick ? 0.3 : 0.6, 0.01, 100.0);
 
 	GranularScene scene(config);
 	const Energies e0 = scene.ComputeEnergies();
@@ -125,7 +119,7 @@ int main(int argc, char** argv)
 		                    "(the gate about to open)");
 	scene.OpenOutlet();
 	std::vector<double> times, counts;
-	std::ofstream csv(opt.out + "/discharge.csv");
+	std::ofstream csv = OpenOutput(opt.out + "/discharge.csv");
 	csv << "time_s,discharged\n";
 	double lastDischarge = 0.0;
 	int lastCount = 0;

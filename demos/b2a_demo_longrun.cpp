@@ -1,6 +1,7 @@
 // b2analytic demo: the hopper scene run for a long time with its discharge recycled to the top,
 // checking on every step that nothing turns NaN, nothing leaves the container except through
 // the outlet, and the mechanical energy never grows beyond what the recycling put in.
+#include "common/CommandLine.h"
 #include "common/DemoCommon.h"
 #include "common/GranularScene.h"
 
@@ -45,12 +46,6 @@ value and its largest rise in one step against M g v_f dt.
 Writes to DIR: summary.json (steps, wall time, max speed, nan count, escaped count, energy
 figures; rewritten every minute while running, with "finished": false), energy.csv (every
 1000 steps) and final.svg (a snapshot at the end).
-
-Options:
-  --steps N       steps to run (default 1000000, quick 4000)
-  --minutes M     stop earlier after M minutes of wall time (default: no limit)
-  --particles N   number of particles (default 900, quick 120)
-  --settle T      seconds with the gate closed before the outlet opens (default 0.3, quick 0.15)
 )";
 
 // The run's running figures.
@@ -111,21 +106,24 @@ double KineticEnergy(const b2Body* b)
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt =
-		ParseDemoOptions(argc, argv, "b2a_demo_longrun", kHelp, {"--steps", "--minutes", "--particles", "--settle"});
+	GranularConfig config;
+	long steps = 0;
+	double minutes = 1e9, settle = 0.0;
+	CommandLine cli("b2a_demo_longrun", kHelp);
+	cli.Add("--steps", steps, 1000000, 4000, "N", "steps to run (default 1000000, quick 4000)", WholeNumber(1, 1e10));
+	cli.Add("--minutes", minutes, "M", "stop earlier after M minutes of wall time (default: no limit)", RealNumber(0.01, 1e9));
+	cli.Add("--particles", config.particles, 900, 120, "N", "number of particles (default 900, quick 120)", WholeNumber(1, 20000));
+	cli.Add("--settle", settle, 0.3, 0.15, "T", "seconds with the gate closed before the outlet opens (default 0.3, quick 0.15)",
+	        RealNumber(0.0, 100.0));
+	const DemoOptions opt = cli.Parse(argc, argv);
 	Progress progress("b2a_demo_longrun");
 	const auto wallStart = std::chrono::steady_clock::now();
 	const auto wallSeconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count(); };
 
-	GranularConfig config;
 	config.seed = opt.seed;
-	config.particles = int(opt.Number("--particles", opt.quick ? 120 : 900, 1, 20000));
 	config.boxWidth = opt.quick ? 40.0 : 60.0;
 	config.boxHeight = opt.quick ? 100.0 : 200.0;
 	config.outletWidth = 12.0 * config.width;
-	const long steps = long(opt.Number("--steps", opt.quick ? 4000 : 1000000, 1, 1e10));
-	const double minutes = opt.Number("--minutes", 1e9, 0.01, 1e9);
-	const double settle = opt.Number("--settle", opt.quick ? 0.15 : 0.3, 0.0, 100.0);
 	// The lattice must fit below the insertion band, or the first particles start inside it.
 	const int perRow = std::max(1, int((config.boxWidth - config.width) / (1.15 * config.width)));
 	const double latticeTop = config.width + 1.15 * config.width * (config.particles / perRow + 1);
@@ -154,7 +152,7 @@ int main(int argc, char** argv)
 	fig.balance0 = scene.ComputeEnergies().Total();
 	const double energy0 = fig.balance0;
 	double balancePrev = fig.balance0;
-	std::ofstream csv(opt.out + "/energy.csv");
+	std::ofstream csv = OpenOutput(opt.out + "/energy.csv");
 	csv << "step,time_s,kinetic,potential,injected,balance,recycled\n";
 
 	const auto summary = [&](bool finished, const char* stoppedBy) {

@@ -1,5 +1,6 @@
 // b2analytic demo: random packing of superellipses under gravity (the paper's Figures 11 and 12):
 // energies against time and the mechanical equilibrium at the end.
+#include "common/CommandLine.h"
 #include "common/DemoCommon.h"
 #include "common/GranularScene.h"
 #include "common/Plot.h"
@@ -29,30 +30,28 @@ particle parameters (its Table 1) are missing from its text: these are ours, of 
 Writes to DIR: summary.json (particles, kinetic_energy, potential_energy, bottom_force,
 weight, packing_fraction, ...), energies.csv, energies.svg (log scale), initial.svg and
 final.svg snapshots. Energies are in g*mm^2/s^2 (1e-9 J), forces in g*mm/s^2 (1e-6 N).
-
-Options:
-  --particles N    number of particles (default 900, quick 200)
-  --duration T     seconds to simulate at most (default 1.0, quick 0.5)
 )";
 } // namespace
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_demo_packing", kHelp, {"--particles", "--duration"});
+	GranularConfig config;
+	double duration = 0.0;
+	CommandLine cli("b2a_demo_packing", kHelp);
+	cli.Add("--particles", config.particles, 900, 200, "N", "number of particles (default 900, quick 200)", WholeNumber(1, 20000));
+	cli.Add("--duration", duration, 1.0, 0.5, "T", "seconds to simulate at most (default 1.0, quick 0.5)", RealNumber(0.01, 100.0));
+	const DemoOptions opt = cli.Parse(argc, argv);
 	const auto wallStart = std::chrono::steady_clock::now();
 	Progress progress("b2a_demo_packing");
-	GranularConfig config;
 	config.seed = opt.seed;
-	config.particles = int(opt.Number("--particles", opt.quick ? 200 : 900, 1, 20000));
 	config.boxWidth = opt.quick ? 40.0 : 60.0;
 	config.outletWidth = 0.0; // a closed container
-	const double duration = opt.Number("--duration", opt.quick ? 0.5 : 1.0, 0.01, 100.0);
 
 	GranularScene scene(config);
 	scene.WriteSnapshot(opt.out + "/initial.svg", "random packing, initial state");
 	const Energies e0 = scene.ComputeEnergies();
 	std::vector<double> t, translational, rotational, potential, total;
-	std::ofstream csv(opt.out + "/energies.csv");
+	std::ofstream csv = OpenOutput(opt.out + "/energies.csv");
 	csv << "time_s,translational,rotational,potential,total\n";
 	double released = 0.0, bottomForce = 0.0;
 	int step = 0;

@@ -10,13 +10,13 @@ packages=(
 	libeigen3-dev           # small dense linear algebra (Newton's Jacobian)
 	doctest-dev             # unit tests
 	nlohmann-json3-dev      # JSON in and out of the tools, demos and benchmarks
+	libcli11-dev            # command lines of the tools, demos and benchmarks
 	# The interactive viewer (demos/viewer) and its headless tests:
 	pkg-config              # finds Dear ImGui and stb (they ship .pc files, no CMake package)
 	libglfw3-dev            # window, OpenGL context, keys and mouse
 	libxrandr2 libxinerama1 libxcursor1 libxi6 # X11 extensions GLFW loads at run time (recommended only)
 	libimgui-dev            # Dear ImGui with its GLFW and OpenGL 3 back ends, one static library
 	libstb-dev              # stb_image_write: the screenshots as PNG (and stb_image, which the tests read them with)
-	libcli11-dev            # the viewer's command line
 	xvfb xauth              # a virtual X display (xvfb-run) for the headless tests
 	libgl1-mesa-dri libglx-mesa0 # Mesa's OpenGL, its software renderer (llvmpipe) included
 )

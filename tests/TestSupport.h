@@ -1,29 +1,14 @@
 // b2analytic tests: small helpers shared by the test folders.
 #pragma once
 
+#include "ReferenceRandom.h" // Random, shared with the reference library
 #include "b2analytic/Math.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <random>
 
 namespace b2a::test
 {
-
-/// Deterministic random numbers for tests (fixed seed per test case).
-struct Random
-{
-	std::mt19937_64 engine;
-	/// Seeded generator.
-	explicit Random(std::uint64_t seed) : engine(seed) {}
-	/// Uniform in [lo, hi).
-	double Uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine); }
-	/// Log-uniform in [lo, hi).
-	double LogUniform(double lo, double hi) { return std::exp(Uniform(std::log(lo), std::log(hi))); }
-	/// Uniform angle in [-π, π).
-	double Angle() { return Uniform(-kPi, kPi); }
-};
 
 /// |a − b| / max(|b|, floor).
 inline double RelativeError(double a, double b, double floor = 1e-300)

@@ -12,7 +12,7 @@
 #pragma once
 
 #include "StressReference.h"
-#include "TestSupport.h"
+#include "ReferenceRandom.h"
 
 #include "b2analytic/b2analytic.h"
 

@@ -1,6 +1,7 @@
 // b2analytic benchmark: run time against error per shape pair, for each of our contact methods
 // and for what a Box2D user would do instead, measured side by side in one process.
 #include "BenchCommon.h"
+#include "common/CommandLine.h"
 #include "PairReference.h"
 #include "PairsPlot.h"
 
@@ -11,6 +12,7 @@
 #include <box2d/b2_distance.h>
 #include <box2d/b2_polygon_shape.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -55,9 +57,7 @@ both sides); Box2D's over the near-tangent and overlapping poses it reports a co
 plain grid calls near-tangent touching pairs apart), or (Box2D) a contact missed where the
 shapes overlap; GJK reports no penetration, so every overlapping pose is a failure for it.
 
-Options: --out DIR, --seed N, --quick (under a minute), --poses N (per class and family),
---repeats N, --families NAME,NAME (only these, e.g. ellipse_a3,superellipse_n4; each family's poses are
-those of the full run, from its own generator seeded by --seed and its name). Writes DIR/pairs.csv, DIR/pairs.md and DIR/pairs_<family>.svg.
+Writes DIR/pairs.csv, DIR/pairs.md and DIR/pairs_<family>.svg.
 )";
 
 // ------------------------------------------------------------------------------------------
@@ -557,28 +557,31 @@ struct Row
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_bench_pairs", kHelp, {"--poses", "--repeats", "--families"});
-	const int perClass = int(opt.Number("--poses", opt.quick ? 8 : 40, 1, 100000));
-	const int repeats = int(opt.Number("--repeats", opt.quick ? 3 : 9, 1, 1000));
+	std::vector<Family> families = Families();
+	std::vector<std::string> allNames, familyNames;
+	for (const Family& f : families)
+		allNames.push_back(f.name);
+	int perClass = 0, repeats = 0;
+	CommandLine cli("b2a_bench_pairs", kHelp);
+	cli.Add("--poses", perClass, 40, 8, "N", "poses per class and family (default 40, quick 8)", WholeNumber(1, 100000));
+	cli.Add("--repeats", repeats, 9, 3, "N", "repeats of each timing, of which the median is reported (default 9, quick 3)", WholeNumber(1, 1000));
+	cli.Add("--families", familyNames, "NAME,NAME",
+	        "only these pair families, e.g. ellipse_a3,superellipse_n4 (default all);\n"
+	        "each family's poses are those of the full run, from its own generator\n"
+	        "seeded by --seed and its name",
+	        OneOf(allNames));
+	const DemoOptions opt = cli.Parse(argc, argv);
 	const int motions = opt.quick ? 4 : 8;
 	const MachineInfo machine = GetMachineInfo();
 	Progress progress("b2a_bench_pairs");
 
-	std::vector<Family> families = Families();
-	if (opt.extra.count("--families"))
+	if (!familyNames.empty())
 	{
-		// Only the families named (comma-separated), in the table's order.
-		const std::string wanted = "," + opt.extra.at("--families") + ",";
+		// Only the families named, in the table's order.
 		std::vector<Family> chosen;
 		for (Family& f : families)
-			if (wanted.find("," + f.name + ",") != std::string::npos)
+			if (std::find(familyNames.begin(), familyNames.end(), f.name) != familyNames.end())
 				chosen.push_back(std::move(f));
-		if (chosen.empty())
-		{
-			std::fprintf(stderr, "b2a_bench_pairs: --families '%s' names no pair family (see --help)\n",
-			             opt.extra.at("--families").c_str());
-			return 2;
-		}
 		families = std::move(chosen);
 	}
 	std::vector<Row> rows;

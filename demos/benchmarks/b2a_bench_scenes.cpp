@@ -2,6 +2,7 @@
 // each run with analytic particles and with Box2D 8-gons inscribed in the same shapes; step time
 // split by Box2D's own profile, at growing particle counts.
 #include "BenchCommon.h"
+#include "common/CommandLine.h"
 #include "common/GranularScene.h"
 
 #include "b2analytic/b2analytic.h"
@@ -56,16 +57,6 @@ box; growth is that cost at a count over the cost at the smallest count. After e
 run every particle is checked: none lost (in the box plus discharged = N), none non-finite,
 none outside the container.
 
-Options:
-  --counts N,N,...     particle counts (default 1000,4000,16000; quick: the smallest given,
-                       else 250)
-  --steps N            steps in the timed window (default 200, quick 30)
-  --scenes S,S         scenes to run: packing, hopper, layer (default packing,hopper)
-  --threads N,N        also run the analytic variant with its contacts computed on N threads
-                       before each step (b2a::PrepareContacts; variant analytic_<N>threads),
-                       e.g. --threads 2; the steps are bit-identical, so only time changes.
-                       Wall-clock time per step (preparation included) is what these
-                       save: wall_step_ms, and wall_speedup (analytic's over the variant's)
 Writes DIR/scenes.csv, DIR/scenes.md and DIR/summary.json, and DIR/<scene>_<N>_<variant>.svg
 pictures at the end of the window for the smallest count. Exits 1 if a particle was lost,
 left the container or became non-finite.
@@ -144,7 +135,6 @@ GranularConfig LayerConfig(int count)
 
 /// The scenes --scenes may name, and the list as its messages print it.
 const std::vector<std::string> kSceneNames = {"packing", "hopper", "layer"};
-const char* kSceneList = "packing, hopper, layer";
 
 /// The scene's configuration at a particle count.
 GranularConfig SceneConfig(const std::string& scene, int count)
@@ -326,49 +316,22 @@ Json PolygonCheck(const GranularConfig& config)
 	        {"mean_area_over_analytic", areaRatio / shapes}};
 }
 
-/// The comma-separated scene names of --scenes.
-std::vector<std::string> SceneNames(const DemoOptions& opt)
+/// Each name once, in the order first given.
+std::vector<std::string> Distinct(const std::vector<std::string>& names)
 {
-	const auto it = opt.extra.find("--scenes");
-	if (it == opt.extra.end())
-		return {"packing", "hopper"};
-	std::vector<std::string> names;
-	std::stringstream list(it->second);
-	std::string name;
-	while (std::getline(list, name, ','))
-	{
-		if (std::find(kSceneNames.begin(), kSceneNames.end(), name) == kSceneNames.end())
-		{
-			std::fprintf(stderr, "b2a_bench_scenes: option '--scenes': unknown scene '%s' (%s)\n", name.c_str(), kSceneList);
-			std::exit(2);
-		}
-		if (std::find(names.begin(), names.end(), name) == names.end())
-			names.push_back(name);
-	}
-	if (names.empty())
-	{
-		std::fprintf(stderr, "b2a_bench_scenes: option '--scenes' names no scene (%s)\n", kSceneList);
-		std::exit(2);
-	}
-	return names;
+	std::vector<std::string> distinct;
+	for (const std::string& name : names)
+		if (std::find(distinct.begin(), distinct.end(), name) == distinct.end())
+			distinct.push_back(name);
+	return distinct;
 }
 
-std::vector<int> Counts(const DemoOptions& opt)
+/// The particle counts to run, smallest first, each once; --quick keeps the smallest.
+std::vector<int> Counts(std::vector<int> counts, bool quick)
 {
-	std::vector<int> counts;
-	const std::vector<double> fallback = opt.quick ? std::vector<double>{250} : std::vector<double>{1000, 4000, 16000};
-	for (double c : opt.Numbers("--counts", fallback, 10, 1e6))
-	{
-		if (c != std::floor(c))
-		{
-			std::fprintf(stderr, "b2a_bench_scenes: option '--counts': '%g' is not a whole number of particles\n", c);
-			std::exit(2);
-		}
-		counts.push_back(int(c));
-	}
 	std::sort(counts.begin(), counts.end());
 	counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
-	if (opt.quick)
+	if (quick)
 		counts.resize(1);
 	return counts;
 }
@@ -412,22 +375,26 @@ double Growth(const std::vector<Run>& runs, const Run& run, double (Run::*cost)(
 
 int main(int argc, char** argv)
 {
-	const DemoOptions opt = ParseDemoOptions(argc, argv, "b2a_bench_scenes", kHelp, {"--counts", "--steps", "--scenes", "--threads"});
+	std::vector<int> givenCounts, threadCounts;
+	std::vector<std::string> sceneNames = {"packing", "hopper"};
+	int windowSteps = 0;
+	CommandLine cli("b2a_bench_scenes", kHelp);
+	cli.Add("--counts", givenCounts, {1000, 4000, 16000}, {250}, "N,N,...",
+	        "particle counts (default 1000,4000,16000; quick: the smallest given,\nelse 250)", WholeNumber(10, 1e6));
+	cli.Add("--steps", windowSteps, 200, 30, "N", "steps in the timed window (default 200, quick 30)", WholeNumber(1, 100000));
+	cli.Add("--scenes", sceneNames, "S,S", "scenes to run: packing, hopper, layer (default packing,hopper)", OneOf(kSceneNames));
+	cli.Add("--threads", threadCounts, "N,N",
+	        "also run the analytic variant with its contacts computed on N threads\n"
+	        "before each step (b2a::PrepareContacts; variant analytic_<N>threads),\n"
+	        "e.g. --threads 2; the steps are bit-identical, so only time changes.\n"
+	        "Wall-clock time per step (preparation included) is what these\n"
+	        "save: wall_step_ms, and wall_speedup (analytic's over the variant's)",
+	        WholeNumber(2, 256));
+	const DemoOptions opt = cli.Parse(argc, argv);
 	const MachineInfo machine = GetMachineInfo();
 	Progress progress("b2a_bench_scenes");
-	const std::vector<int> counts = Counts(opt);
-	const int windowSteps = int(opt.Number("--steps", opt.quick ? 30 : 200, 1, 100000));
-	const std::vector<std::string> scenes = SceneNames(opt);
-	std::vector<int> threadCounts;
-	for (double t : opt.Numbers("--threads", {}, 2, 256))
-	{
-		if (t != std::floor(t))
-		{
-			std::fprintf(stderr, "b2a_bench_scenes: option '--threads': '%g' is not a whole number of threads\n", t);
-			return 2;
-		}
-		threadCounts.push_back(int(t));
-	}
+	const std::vector<int> counts = Counts(givenCounts, opt.quick);
+	const std::vector<std::string> scenes = Distinct(sceneNames);
 
 	// Every run planned first (for the progress fraction); analytic and polygon runs of a scene
 	// follow each other so that a change of load on the machine touches both alike.

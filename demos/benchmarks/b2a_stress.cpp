@@ -9,6 +9,7 @@
 // case, is checked again against the dense references of the unit tests (CommonLevelRef,
 // Perram–Wertheim, SurfaceMin), which validates both.
 #include "BenchCommon.h"
+#include "common/CommandLine.h"
 #include "StressConfig.h"
 
 #include "b2analytic/b2analytic.h"
@@ -49,13 +50,6 @@ category (DIR/<category>.csv: how many answers fall in each decade of error). Ex
 result has a non-finite field or the automatic path fails on a configuration whose level is at
 least 1e-12 of the own level (failures deeper than that, nearly concentric particles, are
 counted and reported apart).
-
-Options:
-  --count N        number of configurations (default 1000000, 40000 with --quick)
-  --full-every K   check one configuration in K (a fixed pseudo-random choice) against the
-                   dense references (default 500)
-  --pool N         superellipse shapes to draw from (default 16384, 512 with --quick; hearts:
-                   N/16). Making a heart costs a millisecond, so configurations share them.
 )";
 
 // ---------------------------------------------------------------------------------------------
@@ -908,10 +902,19 @@ Json ConfigJson(const Config& c, const Outcome& o)
 
 int main(int argc, char** argv)
 {
-	const demo::DemoOptions o = demo::ParseDemoOptions(argc, argv, "b2a_stress", kHelp, {"--count", "--full-every"});
-	const auto count = std::uint64_t(o.Number("--count", o.quick ? 40000 : 1000000, 1, 1e9));
-	const auto fullEvery = std::uint64_t(o.Number("--full-every", 500, 1, 1e9));
-	const int poolSize = int(o.Number("--pool", o.quick ? 512 : 16384, 16, 1e6));
+	std::uint64_t count = 0, fullEvery = 500;
+	int poolSize = 0;
+	demo::CommandLine cli("b2a_stress", kHelp);
+	cli.Add("--count", count, 1000000, 40000, "N", "number of configurations (default 1000000, 40000 with --quick)",
+	        demo::WholeNumber(1, 1e9));
+	cli.Add("--full-every", fullEvery, "K",
+	        "check one configuration in K (a fixed pseudo-random choice) against the\ndense references (default 500)",
+	        demo::WholeNumber(1, 1e9));
+	cli.Add("--pool", poolSize, 16384, 512, "N",
+	        "superellipse shapes to draw from (default 16384, 512 with --quick; hearts:\n"
+	        "N/16). Making a heart costs a millisecond, so configurations share them.",
+	        demo::WholeNumber(16, 1e6));
+	const demo::DemoOptions o = cli.Parse(argc, argv);
 	demo::Progress progress("b2a_stress");
 	const double cpuStart = bench::ThreadCpuNanoseconds();
 	ShapePool pool(o.seed, poolSize, poolSize / 16);

@@ -237,14 +237,14 @@ std::string AnswerContactRequest(const std::string& line, bool& ok)
 	}
 }
 
+const char* ContactToolSummary()
+{
+	return "b2a_contact: contact detection between analytic particles, JSON Lines in, JSON Lines out.";
+}
+
 const char* ContactToolHelp()
 {
-	return R"(b2a_contact: contact detection between analytic particles, JSON Lines in, JSON Lines out.
-
-Usage: b2a_contact [FILE]       (reads standard input without FILE or with FILE = -)
-       b2a_contact --help
-
-Each input line is one JSON object (blank lines are skipped):
+	return R"(Each input line is one JSON object (blank lines are skipped):
   {"id": <any JSON value>, "mode": "common" | "scale_a" | "contact",
    "method": "auto" | "newton" | "grid", "a": <shape>, "b": <shape>}
 mode defaults to "contact", method to "auto". A shape is one of

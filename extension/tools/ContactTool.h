@@ -11,7 +11,11 @@ namespace b2a::tool
 /// JSON included, becomes {"id": ..., "status": "error", "error": "..."}.
 std::string AnswerContactRequest(const std::string& line, bool& ok);
 
-/// The text of `b2a_contact --help`.
+/// The first line of `b2a_contact --help`: what the tool does.
+const char* ContactToolSummary();
+
+/// The text `b2a_contact --help` prints after the usage and the options: the request and answer
+/// formats, the exit status and an example.
 const char* ContactToolHelp();
 
 } // namespace b2a::tool

@@ -1,6 +1,8 @@
 // b2analytic: b2a_contact, contact detection from the command line (JSON Lines in and out).
 #include "ContactTool.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -8,31 +10,30 @@
 
 int main(int argc, char** argv)
 {
-	// Arguments are few enough to read by hand: [--help | -h] [FILE | -].
-	std::string path;
-	for (int i = 1; i < argc; ++i)
+	std::string path = "-";
+	CLI::App app(b2a::tool::ContactToolSummary(), "b2a_contact");
+	app.add_option("FILE", path, "the requests, one JSON object a line (default -: standard input)")->type_name("");
+	app.set_help_flag("-h,--help", "this text");
+	app.footer(b2a::tool::ContactToolHelp());
+	try
 	{
-		const std::string arg = argv[i];
-		if (arg == "--help" || arg == "-h")
-		{
-			std::fputs(b2a::tool::ContactToolHelp(), stdout);
-			return 0;
-		}
-		if (arg.size() > 1 && arg[0] == '-')
-		{
-			std::fprintf(stderr, "b2a_contact: unknown option '%s' (see --help)\n", arg.c_str());
-			return 2;
-		}
-		if (!path.empty())
-		{
-			std::fprintf(stderr, "b2a_contact: more than one input file ('%s', '%s'; see --help)\n", path.c_str(), arg.c_str());
-			return 2;
-		}
-		path = arg;
+		app.parse(argc, argv);
+	}
+	catch (const CLI::CallForHelp&)
+	{
+		std::string help = app.help();
+		help.erase(help.find_last_not_of('\n') + 1); // no blank line at the end
+		std::printf("%s\n", help.c_str());
+		return 0;
+	}
+	catch (const CLI::ParseError& e)
+	{
+		std::fprintf(stderr, "b2a_contact: %s (see --help)\n", e.what());
+		return 2;
 	}
 	std::ifstream file;
 	std::istream* in = &std::cin;
-	if (!path.empty() && path != "-")
+	if (path != "-")
 	{
 		file.open(path);
 		if (!file)
@@ -56,7 +57,7 @@ int main(int argc, char** argv)
 	}
 	if (in->bad())
 	{
-		std::fprintf(stderr, "b2a_contact: read error on '%s'\n", path.empty() ? "stdin" : path.c_str());
+		std::fprintf(stderr, "b2a_contact: read error on '%s'\n", path == "-" ? "stdin" : path.c_str());
 		return 2;
 	}
 	return allOk ? 0 : 1;

@@ -19,7 +19,7 @@
 #include "b2analytic/b2analytic.h"
 #include "TestSupport.h"
 #include "ContactChecks.h"
-#include "../../demos/benchmarks/PairReference.h"
+#include "PairReference.h"
 #include "contact/WarmSlide.h"
 
 #include <vector>

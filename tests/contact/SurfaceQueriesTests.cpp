@@ -10,7 +10,7 @@
 
 #include "TestSupport.h"
 #include "contact/SurfaceCrossing.h"
-#include "geometry/GeometryReference.h"
+#include "GeometryReference.h"
 
 #include <b2analytic/b2analytic.h>
 

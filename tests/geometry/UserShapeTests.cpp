@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include "GeometryReference.h"
+#include "TestSupport.h"
 
 #include <atomic>
 #include <cmath>

@@ -31,26 +31,31 @@ json Ask(const std::string& line, bool expectOk = true)
 	return json::parse(answer);
 }
 
-// Run the built program with a shell command line; returns its exit status and fills `out`.
-int RunTool(const std::string& args, const std::string& input, std::string& out)
+// Run the built program with a shell command line; returns its exit status and fills `out`
+// (and `err` with what it wrote on stderr, when given).
+int RunTool(const std::string& args, const std::string& input, std::string& out, std::string* err = nullptr)
 {
 	// Scratch files in the system's temporary folder, named after this process.
 	const std::string base = (std::filesystem::temp_directory_path() / ("b2a_tool_test_" + std::to_string(getpid()))).string();
-	const std::string inPath = base + "_input.jsonl", outPath = base + "_output.jsonl";
+	const std::string inPath = base + "_input.jsonl", outPath = base + "_output.jsonl", errPath = base + "_error.txt";
 	{
 		std::ofstream f(inPath);
 		f << input;
 	}
-	const std::string cmd = std::string("\"") + B2A_CONTACT_EXE + "\" " + args + " < " + inPath + " > " + outPath + " 2>/dev/null";
+	const std::string cmd =
+		std::string("\"") + B2A_CONTACT_EXE + "\" " + args + " < " + inPath + " > " + outPath + " 2> " + errPath;
 	const int status = std::system(cmd.c_str());
-	{
-		std::ifstream f(outPath);
-		out.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
-	}
-	// (Removed again: left behind, every test run added two files to the temporary folder.)
+	auto read = [](const std::string& path, std::string& text) {
+		std::ifstream f(path);
+		text.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+	};
+	read(outPath, out);
+	if (err)
+		read(errPath, *err);
+	// (Removed again: left behind, every test run added files to the temporary folder.)
 	std::error_code ignored;
-	std::filesystem::remove(inPath, ignored);
-	std::filesystem::remove(outPath, ignored);
+	for (const std::string& path : {inPath, outPath, errPath})
+		std::filesystem::remove(path, ignored);
 	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -197,4 +202,26 @@ TEST_CASE("the program answers every line in order and sets its exit status")
 	CHECK(RunTool("--help", "", out) == 0);
 	CHECK(out.find("scale_a") != std::string::npos);
 	CHECK(out.find("Exit status") != std::string::npos);
+}
+
+TEST_CASE("the program's command line: its help, and bad arguments named with exit status 2")
+{
+	std::string out, err;
+	REQUIRE(RunTool("-h", "", out) == 0);
+	// What the help has always said: the tool, how to call it, the request and answer formats,
+	// the exit status and an example.
+	for (const char* text : {"b2a_contact: contact detection between analytic particles", "Usage: b2a_contact [OPTIONS] [FILE]",
+	                         "FILE", "default -: standard input", "-h,--help", "Each input line is one JSON object",
+	                         "Exit status: 0 when every line was answered", "Example:"})
+	{
+		CAPTURE(text);
+		CHECK(out.find(text) != std::string::npos);
+	}
+	CHECK(RunTool("--frobnicate", "", out, &err) == 2);
+	CHECK(err == "b2a_contact: The following argument was not expected: --frobnicate (see --help)\n");
+	CHECK(RunTool("a.jsonl b.jsonl", "", out, &err) == 2);
+	CHECK(err == "b2a_contact: The following argument was not expected: b.jsonl (see --help)\n");
+	CHECK(RunTool("/nonexistent/requests.jsonl", "", out, &err) == 2);
+	CHECK(err == "b2a_contact: cannot read '/nonexistent/requests.jsonl'\n");
+	CHECK(out.empty());
 }

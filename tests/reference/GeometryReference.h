@@ -1,10 +1,10 @@
-// b2analytic geometry tests: independent reference computations shared by the geometry tests.
+// b2analytic reference library: independent geometry references, for the geometry tests.
 // Nothing here calls into the library except Shape::SurfacePoint / Level where a test says so;
 // the formulas (long double level functions, polygon moments, golden-section refinement, user
 // shape definitions) are written from scratch so that they can disagree with the library.
 #pragma once
 
-#include "TestSupport.h"
+#include "ReferenceRandom.h"
 #include "b2analytic/b2analytic.h"
 
 #include <algorithm>

@@ -1,10 +1,11 @@
-// b2analytic stress benchmark: long-double checks of contact answers from the shapes' formulas.
+// b2analytic reference library: long-double checks of contact answers from the shapes' formulas,
+// for the stress benchmark.
 //
 // Nothing here calls the library's level, gradient, radius, support or solver functions: the
-// shapes are ref::RefShape (tests/contact/ContactReference.h), evaluated in long double, and only
+// shapes are ref::RefShape (ContactReference.h), evaluated in long double, and only
 // the poses' stored cosine and sine are taken from the library (ref::Of). What is here:
 //  - WorldDeriv: value, gradient and Hessian of a level function from its formula (the
-//    reference's BodyDeriv and WorldDeriv, tests/contact/ContactReference.h, at a Posed);
+//    reference's BodyDeriv and WorldDeriv, ContactReference.h, at a Posed);
 //  - Support: the point of a level set with a given outward normal (closed form for
 //    superellipses, a scan and a golden search over the polar angle for the heart's hull);
 //  - Polish: Newton on the optimality conditions of a level problem, in long double;
@@ -13,7 +14,7 @@
 //    overlap depth, as ContactResult documents them.
 #pragma once
 
-#include "contact/ContactReference.h"
+#include "ContactReference.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,5 @@
-// b2analytic benchmarks: long-double reference contacts for the pair benchmark.
+// b2analytic reference library: long-double reference contacts of shape pairs, for the pair
+// benchmark and the contact tests.
 //
 // The contact a method reports (ContactResult) is defined from a level point X: the normal is
 // the mean of A's outward and B's inward unit normals at X, pointA is where the line through X
@@ -6,7 +7,7 @@
 // separation is (pointB − pointA)·n. Two level definitions exist:
 //  - the common level (Newton, min–max, the automatic path for convex pairs): X from the
 //    long-double references of the unit tests (Perram–Wertheim for ellipses, the fixed point of
-//    the surface minimum for other superellipses, tests/contact/ContactReference.h);
+//    the surface minimum for other superellipses, ContactReference.h);
 //  - the one-sided level of the grid method, on each side: X is the point of B's surface where
 //    A's level is smallest (and the same with A and B swapped), from a dense long-double
 //    surface minimum; the grid contact is compared with the side it took (GridContact picks
@@ -16,7 +17,7 @@
 // here calls the library's shapes or solvers.
 #pragma once
 
-#include "contact/ContactReference.h"
+#include "ContactReference.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// b2analytic contact tests: independent long-double references.
+// b2analytic reference library: independent long-double contact references (tests and benchmarks).
 //
 // Nothing here calls a contact solver of the library, nor its shapes' level, radius or sample
 // functions: every shape is described again from its formula (docs/method.md) and evaluated in
