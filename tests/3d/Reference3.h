@@ -16,7 +16,7 @@
 //  - CommonLevel: the fixed point C = G(C) of G(L) = the least level of A over B's solid level-L
 //    set (decreasing in L), by bisection on log C.
 //  - PerramWertheim: for two ellipsoids, C = max over λ of F(λ) = λ(1 − λ) rᵀ(λA⁻¹ + (1 − λ)B⁻¹)⁻¹r
-//    by golden-section search (F is concave), 3×3 solves by Cramer's rule.
+//    (F is concave) by bisection on the sign of F', 3×3 solves by Cramer's rule.
 //  - Polish: Newton in long double on ∇fA + μ∇fB = 0, fA = fB (raw levels, Gaussian
 //    elimination), from a given start: the common level's unique solution (convex shapes) to
 //    long-double precision.
@@ -141,6 +141,36 @@ struct Pose
 	}
 	V3 ToBody(V3 X) const { return InvRotate(X - p); }
 	V3 ToWorld(V3 x) const { return Rotate(x) + p; }
+
+	/// The pose at time t of a body starting at `start`, moving with velocity v and turning with
+	/// the world angular velocity w: centre p + v·t, rotation exp(t·[w]×)·R₀ (Rodrigues' formula).
+	static Pose Moving(const Pose3& start, Vec3 v, Vec3 w, LD t)
+	{
+		Pose m(start);
+		m.p = m.p + t * From(v);
+		const V3 wl = From(w);
+		const LD speed = Len(wl);
+		if (!(speed > 0.0L))
+			return m;
+		const V3 u = (1.0L / speed) * wl;
+		const LD th = speed * t, s = std::sin(th), c1 = 1.0L - std::cos(th);
+		const LD K[3][3] = {{0, -u.z, u.y}, {u.z, 0, -u.x}, {-u.y, u.x, 0}};
+		LD E[3][3];
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j)
+			{
+				LD k2 = 0.0L;
+				for (int k = 0; k < 3; ++k)
+					k2 += K[i][k] * K[k][j];
+				E[i][j] = (i == j ? 1.0L : 0.0L) + s * K[i][j] + c1 * k2;
+			}
+		LD R[3][3];
+		for (int i = 0; i < 3; ++i)
+			for (int j = 0; j < 3; ++j)
+				R[i][j] = E[i][0] * m.R[0][j] + E[i][1] * m.R[1][j] + E[i][2] * m.R[2][j];
+		std::copy(&R[0][0], &R[0][0] + 9, &m.R[0][0]);
+		return m;
+	}
 };
 
 /// The point of the level-L set on the ray from the centre along the body direction d, by
@@ -283,16 +313,40 @@ inline SurfaceMinimum CommonLevel(const Shape& A, const Pose& pa, const Shape& B
 			return SurfaceMinimum{0.0L, pa.p};
 		return SurfaceMin(A, pa, B, pb, L, rings);
 	};
-	LD lo = 1e-6L, hi = centre;
-	while (G(lo).level < lo)
-		lo *= 1e-3L;
-	for (int k = 0; k < 90 && hi - lo > 1e-19L * hi; ++k)
+	// h(u) = log G(e^u) − u decreases; the Illinois variant of regula falsi on it.
+	LD lo = std::log(1e-6L), hi = std::log(centre);
+	auto h = [&](LD u) { return std::log(G(std::exp(u)).level) - u; };
+	while (h(lo) < 0.0L)
+		lo -= std::log(1e3L);
+	LD hLo = h(lo), hHi = -std::numeric_limits<LD>::infinity();
+	// G(centre) = 0: step down until h is finite and negative.
+	for (hi = std::log(centre) - 1e-6L; !(std::isfinite(hHi = h(hi)) && hHi < 0.0L); hi = 0.5L * (hi + lo))
+		;
+	int side = 0;
+	for (int k = 0; k < 100 && hi - lo > 1e-18L; ++k)
 	{
-		const LD mid = std::sqrt(lo * hi);
-		(G(mid).level >= mid ? lo : hi) = mid;
+		const LD u = (lo * hHi - hi * hLo) / (hHi - hLo);
+		const LD hu = h(u);
+		if (hu >= 0.0L)
+		{
+			lo = u;
+			hLo = hu;
+			if (side == -1) hHi *= 0.5L;
+			side = -1;
+		}
+		else
+		{
+			hi = u;
+			hHi = hu;
+			if (side == 1) hLo *= 0.5L;
+			side = 1;
+		}
+		if (hu == 0.0L)
+			break;
 	}
-	SurfaceMinimum m = G(std::sqrt(lo * hi));
-	m.level = std::sqrt(lo * hi);
+	const LD C = std::exp(0.5L * (lo + hi));
+	SurfaceMinimum m = G(C);
+	m.level = C;
 	return m;
 }
 
@@ -339,13 +393,20 @@ inline SurfaceMinimum PerramWertheim(const Shape& A, const Pose& pa, const Shape
 		return Solve3(G, r);
 	};
 	auto F = [&](LD l) { return l * (1.0L - l) * Dot(r, z(l)); };
+	// F is concave; its maximiser is the root of F'(λ) = (1 − 2λ) rᵀz − λ(1 − λ) zᵀ(A⁻¹ − B⁻¹)z,
+	// by bisection (a golden-section search would give λ only to √eps).
+	auto slope = [&](LD l) {
+		const V3 zl = z(l);
+		V3 w;
+		for (int i = 0; i < 3; ++i)
+			w[i] = (Ai[i][0] - Bi[i][0]) * zl.x + (Ai[i][1] - Bi[i][1]) * zl.y + (Ai[i][2] - Bi[i][2]) * zl.z;
+		return (1.0L - 2.0L * l) * Dot(r, zl) - l * (1.0L - l) * Dot(zl, w);
+	};
 	LD lo = 0.0L, hi = 1.0L;
-	const LD g = 0.381966011250105151795413165634361883L;
-	LD x1 = lo + g * (hi - lo), x2 = hi - g * (hi - lo), f1 = F(x1), f2 = F(x2);
-	for (int k = 0; k < 200 && hi - lo > 1e-19L; ++k)
+	for (int k = 0; k < 200 && hi - lo > 1e-21L; ++k)
 	{
-		if (f1 > f2) { hi = x2; x2 = x1; f2 = f1; x1 = lo + g * (hi - lo); f1 = F(x1); }
-		else { lo = x1; x1 = x2; f1 = f2; x2 = hi - g * (hi - lo); f2 = F(x2); }
+		const LD mid = 0.5L * (lo + hi);
+		(slope(mid) > 0.0L ? lo : hi) = mid;
 	}
 	const LD l = 0.5L * (lo + hi);
 	const V3 zl = z(l);

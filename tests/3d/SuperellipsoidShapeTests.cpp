@@ -5,7 +5,7 @@
 
 #include "b2analytic/3d/SuperellipsoidShape.h"
 #include "3d/Reference3.h"
-#include "TestSupport.h"
+#include "3d/Random3.h"
 
 #include <cmath>
 #include <functional>
@@ -31,17 +31,7 @@ std::vector<std::shared_ptr<SuperellipsoidShape>> Family()
 	        MakeSuperellipsoid(1.0, 1.0, 1.0, 1, 1, 1)};
 }
 
-Vec3 RandomUnit(Random& rng)
-{
-	for (;;)
-	{
-		const Vec3 v(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1));
-		if (LengthSquared(v) > 0.01 && LengthSquared(v) <= 1.0)
-			return Normalize(v);
-	}
-}
 
-Quat RandomRotation(Random& rng) { return Normalize(Quat(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1))); }
 
 // ∫₀¹ f by tanh–sinh (double-exponential) quadrature: exact to ~1e-15 for integrands with
 // algebraic singularities at the ends, as the superellipsoid's profiles have.
