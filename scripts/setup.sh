@@ -10,6 +10,7 @@ packages=(
 	libeigen3-dev           # small dense linear algebra (Newton's Jacobian)
 	doctest-dev             # unit tests
 	nlohmann-json3-dev      # JSON in and out of the tools, demos and benchmarks
+	libbullet-dev pkgconf   # Bullet's GJK/EPA, the 3D pair benchmark's baseline (not the library)
 )
 
 for arg in "$@"; do

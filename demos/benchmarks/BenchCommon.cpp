@@ -1,5 +1,6 @@
 // b2analytic benchmarks: shared timing and output code.
 #include "BenchCommon.h"
+#include "common/Plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,35 @@
 
 namespace b2a::bench
 {
+
+std::mt19937_64 FamilyRng(std::uint64_t seed, const std::string& name)
+{
+	std::uint64_t hash = 1469598103934665603ull; // FNV-1a: stable across compilers (std::hash is not)
+	for (const unsigned char ch : name)
+		hash = (hash ^ ch) * 1099511628211ull;
+	std::seed_seq seq{std::uint32_t(seed), std::uint32_t(seed >> 32), std::uint32_t(hash), std::uint32_t(hash >> 32)};
+	return std::mt19937_64(seq);
+}
+
+std::string TimeErrorPlot(const std::string& family, const std::vector<TimeErrorPoint>& points)
+{
+	const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
+	                         "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aa4499", "#44aa99", "#882255",
+	                         "#ddcc77", "#332288"}; // one colour per method (at most 16 rows per family)
+	std::vector<demo::Series> series;
+	for (const TimeErrorPoint& p : points)
+	{
+		demo::Series s;
+		s.name = p.method;
+		s.colour = colours[series.size() % (sizeof colours / sizeof colours[0])];
+		s.points = true;
+		s.x = {std::log10(p.ns)};
+		// Exact answers still differ by rounding: plot at least 1e-17 so that they show.
+		s.y = {std::fmax(p.error, 1e-17)};
+		series.push_back(s);
+	}
+	return demo::LinePlot(series, family + ": time against contact point error", "log10 ns per query", "max point error / size", true);
+}
 
 MachineInfo GetMachineInfo()
 {

@@ -6,6 +6,9 @@
 
 #include "common/DemoCommon.h"
 
+#include <cstdint>
+#include <cstdio>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -94,6 +97,57 @@ PairedTiming MedianPairedPerQuery(Pass&& pass, Baseline&& baseline, int queriesP
 	}
 	return {Median(std::move(times)), Median(std::move(baseTimes)), Median(std::move(ratios))};
 }
+
+/// A method's time per query on its poses and its ratio to a baseline on the same poses: the two
+/// timed in alternation (MedianPairedPerQuery), so that the ratio does not take the machine's
+/// drift between rows; the baseline itself gets its own median time and ratio 1.
+template <class Pass, class Baseline>
+PairedTiming TimeAgainstBaseline(Pass&& pass, Baseline&& baseline, bool isBaseline, int queriesPerPass, int repeats)
+{
+	if (isBaseline)
+		return {MedianNanosecondsPerQuery(pass, queriesPerPass, repeats), 0.0, 1.0};
+	PairedTiming t = MedianPairedPerQuery(pass, baseline, queriesPerPass, repeats, ThreadCpuNanoseconds);
+	t.baselineNs = 0.0;
+	return t;
+}
+
+/// Keeps the items (pair families: anything with a `name`) that the option `--families`
+/// names, comma-separated, in their order; all where it is not given. False, with a message on
+/// stderr naming the option's value, where it names none.
+template <class Item>
+bool SelectFamilies(std::vector<Item>& items, const demo::DemoOptions& opt, const char* program)
+{
+	if (!opt.extra.count("--families"))
+		return true;
+	const std::string wanted = "," + opt.extra.at("--families") + ",";
+	std::vector<Item> chosen;
+	for (Item& item : items)
+		if (wanted.find("," + item.name + ",") != std::string::npos)
+			chosen.push_back(std::move(item));
+	if (chosen.empty())
+	{
+		std::fprintf(stderr, "%s: --families '%s' names no pair family (see --help)\n", program, opt.extra.at("--families").c_str());
+		return false;
+	}
+	items = std::move(chosen);
+	return true;
+}
+
+/// A generator of a pair family's own, seeded by the run's seed and the family's name (FNV-1a,
+/// stable across compilers), so that a family's poses do not depend on which others run.
+std::mt19937_64 FamilyRng(std::uint64_t seed, const std::string& name);
+
+/// One point of a time-against-error plot: a method's time per query and its worst point error.
+struct TimeErrorPoint
+{
+	std::string method; ///< legend text
+	double ns = 0.0;    ///< time per query
+	double error = 0.0; ///< max point error / size
+};
+
+/// The SVG scatter of a family's methods, log10 time against point error (log scale; exact
+/// answers plotted at 1e-17 so that they show), one colour per method.
+std::string TimeErrorPlot(const std::string& family, const std::vector<TimeErrorPoint>& points);
 
 /// A table written both as CSV (machine-readable) and as Markdown (for a reader).
 struct Table

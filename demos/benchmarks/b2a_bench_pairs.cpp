@@ -197,17 +197,6 @@ Pose PlaceB(const Family& f, const Pose& pa, double angleB, Vec2 u, double gap)
 	return Pose(pa.p + 0.5 * (lo + hi) * u, angleB);
 }
 
-// Each family's poses come from a generator of its own, seeded by the run's seed and the
-// family's name, so that `--families` reproduces a family's rows of the full run exactly.
-std::mt19937_64 FamilyRng(std::uint64_t seed, const std::string& name)
-{
-	std::uint64_t hash = 1469598103934665603ull; // FNV-1a: stable across compilers (std::hash is not)
-	for (const unsigned char ch : name)
-		hash = (hash ^ ch) * 1099511628211ull;
-	std::seed_seq seq{std::uint32_t(seed), std::uint32_t(seed >> 32), std::uint32_t(hash), std::uint32_t(hash >> 32)};
-	return std::mt19937_64(seq);
-}
-
 std::vector<PairPose> MakePoses(const Family& f, int perClass, int motions, std::mt19937_64& rng)
 {
 	std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -565,22 +554,8 @@ int main(int argc, char** argv)
 	Progress progress("b2a_bench_pairs");
 
 	std::vector<Family> families = Families();
-	if (opt.extra.count("--families"))
-	{
-		// Only the families named (comma-separated), in the table's order.
-		const std::string wanted = "," + opt.extra.at("--families") + ",";
-		std::vector<Family> chosen;
-		for (Family& f : families)
-			if (wanted.find("," + f.name + ",") != std::string::npos)
-				chosen.push_back(std::move(f));
-		if (chosen.empty())
-		{
-			std::fprintf(stderr, "b2a_bench_pairs: --families '%s' names no pair family (see --help)\n",
-			             opt.extra.at("--families").c_str());
-			return 2;
-		}
-		families = std::move(chosen);
-	}
+	if (!SelectFamilies(families, opt, "b2a_bench_pairs"))
+		return 2;
 	std::vector<Row> rows;
 	for (size_t fi = 0; fi < families.size(); ++fi)
 	{
@@ -640,22 +615,13 @@ int main(int argc, char** argv)
 					Accumulate(answers[i], r.common, poses[which[i]].cls, m.convention, size, row.errors);
 			}
 			// Each method against the 8-gons on its own poses (a warm row's are the motions), the
-			// two timed in alternation (MedianPairedPerQuery), so that the ratio, the target's
-			// measure, does not take the machine's drift between rows.
+			// two timed in alternation, so that the ratio, the target's measure, does not take
+			// the machine's drift between rows.
 			const auto pass = [&] { m.run(f, poses, which, nullptr); };
-			if (polygon8 && &m != polygon8)
-			{
-				const PairedTiming t = MedianPairedPerQuery(
-					pass, [&] { polygon8->run(f, poses, which, nullptr); }, int(which.size()), repeats, ThreadCpuNanoseconds);
-				row.ns = t.ns;
-				row.ratio = t.ratio;
-			}
-			else
-			{
-				row.ns = MedianNanosecondsPerQuery(pass, int(which.size()), repeats);
-				if (polygon8)
-					row.ratio = 1.0;
-			}
+			const PairedTiming t = TimeAgainstBaseline(
+				pass, [&] { polygon8->run(f, poses, which, nullptr); }, !polygon8 || &m == polygon8, int(which.size()), repeats);
+			row.ns = t.ns;
+			row.ratio = polygon8 ? t.ratio : std::nan("");
 			rows.push_back(row);
 		}
 		std::fprintf(stderr, "b2a_bench_pairs: %s done (%zu poses)\n", f.name.c_str(), poses.size());
@@ -707,28 +673,13 @@ int main(int argc, char** argv)
 	text += md.Markdown();
 	WriteText(opt.out + "/pairs.md", text);
 
-	const char* colours[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2",
-	                         "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aa4499", "#44aa99", "#882255",
-	                         "#ddcc77", "#332288"}; // one colour per method (at most 16 rows per family)
 	for (const Family& f : families)
 	{
-		std::vector<Series> series;
+		std::vector<TimeErrorPoint> points;
 		for (const Row& r : rows)
-		{
-			if (r.family != f.name || r.errors.compared == 0)
-				continue;
-			Series s;
-			s.name = r.method;
-			s.colour = colours[series.size() % (sizeof colours / sizeof colours[0])];
-			s.points = true;
-			s.x = {std::log10(r.ns)};
-			// Exact answers still differ by rounding: plot at least 1e-17 so that they show.
-			s.y = {std::fmax(r.errors.point, 1e-17)};
-			series.push_back(s);
-		}
-		WriteText(opt.out + "/pairs_" + f.name + ".svg",
-		          LinePlot(series, f.name + ": time against contact point error", "log10 ns per query",
-		                   "max point error / size", true));
+			if (r.family == f.name && r.errors.compared > 0)
+				points.push_back({r.method, r.ns, r.errors.point});
+		WriteText(opt.out + "/pairs_" + f.name + ".svg", TimeErrorPlot(f.name, points));
 	}
 
 	const auto find = [&](const std::string& fam, const std::string& method) -> const Row* {

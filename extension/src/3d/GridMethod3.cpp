@@ -331,6 +331,23 @@ LevelResult3 SolveCommonLevelGrid(const Shape3& a, const Pose3& pa, const Shape3
 		gTilde(root.x);
 	last.iterations = iterations;
 	last.method = SolveMethod::grid;
+	// The root's bracket closes to rounding in C, but the point moves with C faster than C does
+	// where the surfaces are flat (1e-9 of the size): where both shapes are smooth, a polish by
+	// Newton on the common level's equations from here, inside its quadratic regime.
+	if (a.IsSmoothConvex() && b.IsSmoothConvex() && last.multiplier > 0.0 && options.gridRefine)
+	{
+		SolverOptions polish = options;
+		polish.maxIterations = 8;
+		const LevelResult3 n = RunNewton3(f, f.Xi(last.point), std::log(last.multiplier), polish);
+		if (n.Ok() && Distance(n.point, last.point) <= 1e-6 * f.scale)
+		{
+			last.level = n.level;
+			last.point = n.point;
+			last.normal = n.normal;
+			last.multiplier = n.multiplier;
+			last.iterations += n.iterations;
+		}
+	}
 	return last;
 }
 
