@@ -11,7 +11,7 @@
 // Chains, each written once here:
 //  closedForm  the spheres' closed form
 //  ellipsoid   Perram–Wertheim's one-dimensional form → newton
-//  newton      Newton warm (where a warm start is valid) → Newton cold → min–max
+//  newton      Newton warm (where a warm start is valid) → Newton cold → min–max → grid
 //  grid        the grid method's fixed point C = g(C) → the same with 16 times the samples
 //  ComputeContact first: coincident centres → the axis of least overlap (no level point exists)
 //  MethodChoice::newton is Newton alone (warm, else cold); MethodChoice::grid the grid chain.
@@ -47,6 +47,11 @@ LevelResult3 NewtonChain(const Shape3& a, const Pose3& pa, const Shape3& b, cons
 	}
 	iterations += r.iterations;
 	r = SolveCommonLevelMinMax(a, pa, b, pb, options);
+	if (!r.Ok())
+	{
+		iterations += r.iterations;
+		r = SolveCommonLevelGrid(a, pa, b, pb, options);
+	}
 	r.iterations += iterations;
 	if (r.Ok())
 		r.status = SolveStatus::convergedAfterFallback;

@@ -45,59 +45,73 @@ Vec3 CholeskySolve(const double L[3][3], Vec3 b)
 	return {x0, x1, x2};
 }
 
-// X(ν) = argmin ψA + e^ν ψB by damped Newton from xi (updated in place), with a Levenberg shift
-// where the Hessian is only semi-definite (flat faces, points far from both shapes). Both ψ are
-// convex, so the direction descends and the backtracking search converges. Returns ψA − ψB there.
+// X(ν) = argmin ψA + e^ν ψB by Newton with a Levenberg–Marquardt shift from xi (updated in
+// place). Both ψ are convex, so the shifted direction descends; the shift grows where a step
+// needs cutting back (flat faces of high exponents, whose Hessian nearly vanishes along them and
+// whose Newton steps run far along the face) and shrinks where full steps are taken, so that the
+// direction across the faces, which sets ψA − ψB, converges however flat they are. Stops where
+// the step's predicted decrease is at the rounding of the sum. Returns ψA − ψB there.
 double InnerMinimum(const PairFrame3& f, double nu, Vec3& xi, int& evaluations)
 {
 	const double trust = std::max(0.5, 0.5 * Length(f.Xi(f.b.pose.p) - f.Xi(f.a.pose.p)));
 	const double mu = std::exp(nu);
-	for (int it = 0; it < 100; ++it)
+	double damping = 1e-12; // relative to the Hessian's size
+	for (int it = 0; it < 200; ++it)
 	{
 		const GaugeValue3 A = f.Eval(f.a, xi, true), B = f.Eval(f.b, xi, true);
 		++evaluations;
 		const Vec3 g = A.grad + mu * B.grad;
-		Sym33 H = A.hess + mu * B.hess;
+		const Sym33 H0 = A.hess + mu * B.hess;
 		const double phi = A.psi + mu * B.psi;
-		const double scale = std::fabs(H.xx) + std::fabs(H.yy) + std::fabs(H.zz) +
-		                     2.0 * (std::fabs(H.xy) + std::fabs(H.xz) + std::fabs(H.yz));
-		if (!(scale > 0.0) || !std::isfinite(scale))
+		const double scale = std::fabs(H0.xx) + std::fabs(H0.yy) + std::fabs(H0.zz) +
+		                     2.0 * (std::fabs(H0.xy) + std::fabs(H0.xz) + std::fabs(H0.yz));
+		if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(phi))
 			break; // a Hessian that vanishes gives no scale for the shift
-		double L[3][3];
-		double shift = 1e-12 * scale;
-		bool factored = Cholesky3(H, scale, L);
-		// The shifts exceed the scale by the 14th try, where the shifted matrix is diagonally
-		// dominant: the cap is never reached.
-		for (int k = 0; k < 30 && !factored; ++k)
+		bool moved = false;
+		for (int attempt = 0; attempt < 40 && !moved && damping < 1e12; ++attempt)
 		{
-			H.xx += shift;
-			H.yy += shift;
-			H.zz += shift;
-			shift *= 10.0;
-			factored = Cholesky3(H, scale, L);
-		}
-		if (!factored)
-			break;
-		Vec3 step = -CholeskySolve(L, g);
-		const double len = MaxAbs(step);
-		if (!(len > 0.0) || !std::isfinite(len))
-			break;
-		if (len > trust)
-			step = (trust / len) * step;
-		const double slope = Dot(g, step);
-		double alpha = 1.0;
-		bool accepted = false;
-		for (int k = 0; k < 50; ++k, alpha *= 0.5)
-		{
-			const Vec3 trial = xi + alpha * step;
-			if (f.Psi(f.a, trial) + mu * f.Psi(f.b, trial) <= phi + 1e-4 * alpha * slope)
+			Sym33 H = H0;
+			double L[3][3];
+			bool factored = false;
+			for (int k = 0; k < 30 && !factored; ++k, damping *= 10.0)
 			{
-				xi = trial;
-				accepted = true;
-				break;
+				H = H0;
+				H.xx += damping * scale;
+				H.yy += damping * scale;
+				H.zz += damping * scale;
+				factored = Cholesky3(H, scale, L);
+				if (factored)
+					break;
 			}
+			if (!factored)
+				return f.Psi(f.a, xi) - f.Psi(f.b, xi);
+			Vec3 step = -CholeskySolve(L, g);
+			const double len = MaxAbs(step);
+			if (!(len > 0.0) || !std::isfinite(len))
+				return f.Psi(f.a, xi) - f.Psi(f.b, xi);
+			if (len > trust)
+				step = (trust / len) * step;
+			const double slope = Dot(g, step);
+			if (!(-slope > 1e-30 * std::fabs(phi)))
+				return f.Psi(f.a, xi) - f.Psi(f.b, xi); // converged: nothing left to gain
+			double alpha = 1.0;
+			for (int k = 0; k < 6; ++k, alpha *= 0.5)
+			{
+				const Vec3 trial = xi + alpha * step;
+				if (f.Psi(f.a, trial) + mu * f.Psi(f.b, trial) <= phi + 1e-4 * alpha * slope)
+				{
+					xi = trial;
+					moved = true;
+					break;
+				}
+			}
+			// Full steps: trust the quadratic model more; cut-back or rejected ones: less.
+			if (moved && alpha == 1.0)
+				damping = std::max(1e-12, 0.1 * damping);
+			else
+				damping *= moved ? 4.0 : 100.0;
 		}
-		if (!accepted || alpha * len < 1e-15)
+		if (!moved)
 			break;
 	}
 	return f.Psi(f.a, xi) - f.Psi(f.b, xi);
@@ -173,6 +187,13 @@ LevelResult3 SolveCommonLevelMinMax(const Shape3& a, const Pose3& pa, const Shap
 	if (!A.finite)
 	{
 		result.failure = "min-max: non-finite level at the answer";
+		return result;
+	}
+	const double levelB = f.Eval(f.b, xi, false).lambda;
+	if (!(std::fabs(A.lambda - levelB) <= 1e-10 * std::max(A.lambda, levelB)))
+	{
+		result.failure = "min-max: the levels at its answer differ (the inner minimum did not settle)";
+		result.iterations = evaluations;
 		return result;
 	}
 	result.status = SolveStatus::converged;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <utility>
 
 namespace b2a
@@ -13,6 +14,12 @@ namespace b2a
 
 namespace
 {
+// A residual (relative to its terms) below which a stalled or singular Newton iteration is at
+// its rounding floor and has converged. Above it the solve fails (the chain's min-max takes
+// over): flat faces of high exponents touching face to face stall Newton at residuals of 1e-10,
+// where the two levels still differ by that much.
+constexpr double kRoundingFloor = 1e-12;
+
 struct NewtonPoint3
 {
 	Vec3 xi;
@@ -69,17 +76,84 @@ void TakeLeastSquaresMultiplier(NewtonPoint3& p)
 		SetMultiplier(p, nuLs, muLs);
 }
 
-// The Newton step: J = [[H_A + μH_B, μ∇ψB], [(∇ψA − ∇ψB)ᵀ, 0]] in (ξ, ν).
-Solve4Result NewtonStep(const NewtonPoint3& p)
+// The Newton step: J = [[H_A + μH_B, μ∇ψB], [(∇ψA − ∇ψB)ᵀ, 0]] in (ξ, ν). Where J is singular
+// to rounding (two flat faces parallel: superellipsoids of high exponents touching face to face,
+// whose Hessians vanish along the faces, so that the point is barely determined along them
+// while the level is), the step is J's truncated pseudo-inverse applied to −r: singular values
+// below 1e-12 of the largest dropped (an SVD), so that it solves the determined directions (the
+// level's, across the faces) as Newton's step would and leaves the flat ones where they are.
+Solve4Result NewtonStep(const NewtonPoint3& p, bool& truncated)
 {
 	const Sym33 H = p.A.hess + p.mu * p.B.hess;
 	const Vec3 dmu = p.mu * p.B.grad, row = p.A.grad - p.B.grad;
-	const double J[4][4] = {{H.xx, H.xy, H.xz, dmu.x},
-	                        {H.xy, H.yy, H.yz, dmu.y},
-	                        {H.xz, H.yz, H.zz, dmu.z},
-	                        {row.x, row.y, row.z, 0.0}};
 	const double minusR[4] = {-p.r[0], -p.r[1], -p.r[2], -p.r[3]};
-	return Solve4(J, minusR);
+	const double J[4][4] = {{H.xx, H.xy, H.xz, dmu.x}, {H.xy, H.yy, H.yz, dmu.y}, {H.xz, H.yz, H.zz, dmu.z}, {row.x, row.y, row.z, 0.0}};
+	Solve4Result step = Solve4(J, minusR);
+	truncated = false;
+	if (step.rcond > 1e-14)
+		return step;
+	Eigen::Matrix4d M;
+	for (int i = 0; i < 4; ++i)
+		for (int k = 0; k < 4; ++k)
+			M(i, k) = J[i][k];
+	if (!M.allFinite())
+		return step;
+	const Eigen::JacobiSVD<Eigen::Matrix4d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
+	const Eigen::Vector4d sigma = svd.singularValues();
+	if (!(sigma(0) > 0.0))
+		return step;
+	const Eigen::Vector4d ur = svd.matrixU().transpose() * Eigen::Vector4d(minusR[0], minusR[1], minusR[2], minusR[3]);
+	Eigen::Vector4d scaled = Eigen::Vector4d::Zero();
+	for (int i = 0; i < 4; ++i)
+		if (sigma(i) > 1e-12 * sigma(0))
+			scaled(i) = ur(i) / sigma(i);
+	const Eigen::Vector4d x = svd.matrixV() * scaled;
+	for (int i = 0; i < 4; ++i)
+		step.x[i] = x(i);
+	step.rcond = 1.0; // usable: the dropped directions are not stepped along
+	truncated = true;
+	return step;
+}
+
+// Where Newton's direction does not lower the residual (the Jacobian nearly singular: flat faces
+// of high exponents touching face to face), Levenberg–Marquardt's on the weighted residual
+// ½ rᵀWr, W = diag(w12, w12, w12, w3) the line search's frozen weights: d = −(JᵀWJ + λI)⁻¹JᵀWr,
+// which for growing λ turns towards steepest descent and so lowers the residual for a short
+// enough step. λ from 1e-8 of JᵀWJ's mean diagonal up by thousandfolds. True with `trial` set
+// where a step is accepted.
+bool RecoveryStep(const PairFrame3& f, const NewtonPoint3& p, double w12, double w3, double trust, double merit0,
+                  const std::function<double(const NewtonPoint3&)>& merit, NewtonPoint3& trial)
+{
+	const Sym33 H = p.A.hess + p.mu * p.B.hess;
+	const Vec3 dmu = p.mu * p.B.grad, row = p.A.grad - p.B.grad;
+	Eigen::Matrix4d J;
+	J << H.xx, H.xy, H.xz, dmu.x, H.xy, H.yy, H.yz, dmu.y, H.xz, H.yz, H.zz, dmu.z, row.x, row.y, row.z, 0.0;
+	const Eigen::Vector4d w(w12, w12, w12, w3), r(p.r[0], p.r[1], p.r[2], p.r[3]);
+	const Eigen::Matrix4d M = J.transpose() * w.asDiagonal() * J;
+	const Eigen::Vector4d g = J.transpose() * (w.asDiagonal() * r);
+	const double mean = 0.25 * M.trace();
+	if (!(mean > 0.0) || !std::isfinite(mean) || !g.allFinite())
+		return false;
+	for (double lambda = 1e-8; lambda <= 10.0; lambda *= 1e3)
+	{
+		const Eigen::Vector4d d = -(M + lambda * mean * Eigen::Matrix4d::Identity()).ldlt().solve(g);
+		if (!d.allFinite())
+			continue;
+		double limit = 1.0;
+		const double stepXi = std::max({std::fabs(d(0)), std::fabs(d(1)), std::fabs(d(2))});
+		if (stepXi > trust)
+			limit = trust / stepXi;
+		if (std::fabs(d(3)) > 2.0)
+			limit = std::min(limit, 2.0 / std::fabs(d(3)));
+		double alpha = limit;
+		for (int k = 0; k < 20; ++k, alpha *= 0.5)
+		{
+			Evaluate(f, p.xi + alpha * Vec3(d(0), d(1), d(2)), p.nu + alpha * d(3), trial);
+			if (trial.finite && merit(trial) < merit0)
+				return true;
+		}
+	}
+	return false;
 }
 } // namespace
 
@@ -103,10 +177,11 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 			return result;
 		}
 		TakeLeastSquaresMultiplier(p);
-		const Solve4Result step = NewtonStep(p);
+		bool shifted = false; // a truncated or recovery step: its length says nothing of convergence
+		const Solve4Result step = NewtonStep(p, shifted);
 		if (!(step.rcond > 1e-14))
 		{
-			if (p.relative < 1e-11)
+			if (p.relative < kRoundingFloor)
 				break; // singular only at the answer's rounding level
 			result.failure = "singular or ill-conditioned Jacobian";
 			return result;
@@ -128,7 +203,7 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 			return w12 * (q.r[0] * q.r[0] + q.r[1] * q.r[1] + q.r[2] * q.r[2]) + w3 * q.r[3] * q.r[3];
 		};
 		const double merit0 = merit(p);
-		const int halvings = p.relative < 1e-9 ? 3 : 40; // at the rounding floor more cannot help
+		const int halvings = p.relative < kRoundingFloor ? 3 : 40; // at the rounding floor more cannot help
 		double alpha = 1.0;
 		bool accepted = false;
 		for (int k = 0; k < halvings; ++k, alpha *= 0.5)
@@ -142,14 +217,19 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 		}
 		if (!accepted)
 		{
-			if (p.relative < 1e-9)
+			if (p.relative < kRoundingFloor)
 				break; // rounding floor: no step lowers the residual any more
-			result.failure = "line search stalled (no step lowers the residual)";
-			return result;
+			if (!RecoveryStep(f, p, w12, w3, trust, merit0, merit, *trial))
+			{
+				result.failure = "line search stalled (no step lowers the residual)";
+				return result;
+			}
+			shifted = true; // not a Newton step: no convergence read from its length
+			alpha = 0.0;
 		}
 		const double moved = alpha * std::max({std::fabs(delta[0]), std::fabs(delta[1]), std::fabs(delta[2])});
 		std::swap(current, trial);
-		const bool full = limit == 1.0 && alpha == 1.0;
+		const bool full = limit == 1.0 && alpha == 1.0 && !shifted;
 		if ((full && moved <= options.stepTolerance) || current->relative < 1e-15)
 			break;
 		if (it == cap)
