@@ -11,7 +11,10 @@ namespace b2a::tool
 /// JSON included, becomes {"id": ..., "status": "error", "error": "..."}.
 std::string AnswerContactRequest(const std::string& line, bool& ok);
 
-/// The text of `b2a_contact --help`.
+/// The text of `b2a_contact --help`: the 2D part, then the 3D shapes and the toi mode.
 const char* ContactToolHelp();
+
+/// The --help text's part on 2D shapes and modes.
+const char* ContactTool2dHelp();
 
 } // namespace b2a::tool
