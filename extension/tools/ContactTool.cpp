@@ -88,7 +88,14 @@ ParsedShape ParseShape(const json& request, const std::string& key, bool motion 
 
 bool SuperellipseFamily(const Shape& s)
 {
-	return s.Family() == ShapeFamily::circle || s.Family() == ShapeFamily::ellipse || s.Family() == ShapeFamily::superellipse;
+	return dynamic_cast<const SuperellipseShape*>(&s) != nullptr;
+}
+
+// The shape's type as the request names it ("heart"): its description up to the parameters.
+std::string TypeName(const Shape& s)
+{
+	const std::string d = s.Describe();
+	return d.substr(0, d.find('('));
 }
 
 // Mode toi in 2D: the first contact of two shapes moving with constant linear and angular
@@ -175,7 +182,7 @@ json Answer(const json& request, json& id)
 		{
 			if (!SuperellipseFamily(sa) || !SuperellipseFamily(sb))
 				throw RequestError("mode 'common' is defined for the superellipse family only (superellipse, ellipse, "
-				                   "circle); use mode 'scale_a' for " + std::string(FamilyName(SuperellipseFamily(sa) ? sb.Family() : sa.Family())) + " shapes");
+				                   "circle); use mode 'scale_a' for " + TypeName(SuperellipseFamily(sa) ? sb : sa) + " shapes");
 			level = SolveCommonLevel(sa, a.pose, sb, b.pose, choice);
 			touching = level.level <= 1.0;
 		}
