@@ -44,6 +44,7 @@ public:
 private:
 	constexpr explicit ShapeKind(int id) : m_id(std::int16_t(id)) {}
 	friend struct BuiltinKinds;
+	friend struct BuiltinKinds3; // the 3D ones (b2analytic/3d/ShapeKind3.h)
 	friend ShapeKind RegisterShapeKind(const std::string& name, int dimension, SolverClass solverClass);
 	friend ShapeKind FindShapeKind(const std::string& name);
 

@@ -2,7 +2,6 @@
 #include "b2analytic/3d/Shape3.h"
 
 #include <algorithm>
-#include <cstring>
 
 namespace b2a
 {
@@ -33,21 +32,13 @@ int SurfaceSamples3::Neighbours(int i, std::vector<int>& out) const
 	return int(out.size());
 }
 
-namespace
+Shape3::Shape3(ShapeKind kind, double surfaceLevel, bool convex, bool smoothConvex, double levelPower)
+	: m_kind(kind), m_surfaceLevel(surfaceLevel), m_convex(convex), m_smoothConvex(smoothConvex), m_levelPower(levelPower)
 {
-int KindIndex(const char* name)
-{
-	for (int k = 0; k < kKind3Count; ++k)
-		if (std::strcmp(name, kKind3Names[k]) == 0)
-			return k;
-	throw InvalidParameter(std::string("3D shape: unknown kind '") + name + "'", "kind");
-}
-} // namespace
-
-Shape3::Shape3(const char* kindName, double surfaceLevel, bool convex, bool smoothConvex, double levelPower)
-	: m_kindName(kindName), m_kind(KindIndex(kindName)), m_surfaceLevel(surfaceLevel), m_convex(convex), m_smoothConvex(smoothConvex),
-	  m_levelPower(levelPower)
-{
+	if (KindDimension(kind) != 3)
+		throw InvalidParameter(std::string("3D shape: field 'kind' must be a registered kind of dimension 3, got \"") +
+		                           b2a::KindName(kind) + "\"",
+		                       "kind");
 }
 
 Shape3::~Shape3() = default;

@@ -1,5 +1,6 @@
 // b2analytic: the superellipsoid family with closed forms.
 #include "b2analytic/3d/SuperellipsoidShape.h"
+#include "b2analytic/3d/ShapeKind3.h"
 
 #include "3d/SurfaceGrid.h"
 #include "geometry/SuperellipseTerms.h" // PowAbs, SignOf
@@ -18,11 +19,11 @@ namespace
 {
 int SmallInteger(double e) { return (e == std::floor(e) && e >= 0.0 && e <= 64.0) ? int(e) : -1; }
 
-const char* KindOf(double a, double b, double c, double n1, double n2, double n3)
+ShapeKind KindOf(double a, double b, double c, double n1, double n2, double n3)
 {
 	if (n1 == 2.0 && n2 == 2.0 && n3 == 2.0)
-		return (a == b && b == c) ? "sphere" : "ellipsoid";
-	return (n1 >= 2.0 && n2 >= 2.0 && n3 >= 2.0) ? "superellipsoid" : "convex_superellipsoid";
+		return (a == b && b == c) ? BuiltinKinds3::sphere : BuiltinKinds3::ellipsoid;
+	return (n1 >= 2.0 && n2 >= 2.0 && n3 >= 2.0) ? BuiltinKinds3::superellipsoid : BuiltinKinds3::convexSuperellipsoid;
 }
 
 void RequirePositive(const char* what, const char* field, double v)

@@ -2,6 +2,7 @@
 #include "b2analytic/ShapeKind.h"
 
 #include "b2analytic/Shape.h"
+#include "b2analytic/3d/ShapeKind3.h"
 
 #include <atomic>
 #include <mutex>
@@ -27,6 +28,8 @@ struct Registry
 		// The built-in kinds, with the ids BuiltinKinds promises.
 		for (int i = 0; i < BuiltinKinds::count; ++i)
 			Add(BuiltinKinds::names[i], 2, BuiltinKinds::solverClasses[i]);
+		for (int i = 0; i < BuiltinKinds3::count; ++i)
+			Add(BuiltinKinds3::names[i], 3, BuiltinKinds3::solverClasses[i]);
 	}
 	// (Under the mutex, or in the constructor.)
 	int Add(const std::string& kindName, int kindDimension, SolverClass kindClass)

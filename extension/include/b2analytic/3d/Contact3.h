@@ -3,6 +3,7 @@
 
 #include "b2analytic/3d/ContactResult3.h"
 #include "b2analytic/3d/Shape3.h"
+#include "b2analytic/ShapeKind.h"
 
 namespace b2a
 {
@@ -47,7 +48,27 @@ LevelResult3 SolveCommonLevelGrid(const Shape3& a, const Pose3& pa, const Shape3
 LevelResult3 SolveScaleA(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb,
                          MethodChoice method = MethodChoice::automatic, const SolverOptions& options = {});
 
-/// Common level through the 3D dispatch: spheres in closed form; ellipsoids (and spheres) by
+/// A contact function of the 3D dispatch table. `warm` may be null.
+using ContactFunction3 = ContactResult3 (*)(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb,
+                                            const SolverOptions& options, WarmStart3* warm);
+/// A common-level function of the 3D dispatch table. `warm` may be null.
+using LevelFunction3 = LevelResult3 (*)(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb,
+                                        const SolverOptions& options, const WarmStart3* warm);
+
+/// Replace the 3D table's contact function for a pair of 3D kinds (registered, dimension 3;
+/// the pair the other way round gets it flipped). Call before the pairs it changes are solved.
+/// Throws InvalidParameter naming 'a', 'b' or 'function' for a kind that is not a registered 3D
+/// kind or a null function.
+void RegisterContactFunction(ShapeKind a, ShapeKind b, ContactFunction3 function);
+/// The same for the common-level function (SolveCommonLevel's).
+void RegisterLevelFunction(ShapeKind a, ShapeKind b, LevelFunction3 function);
+/// The 3D table's contact function for a pair of 3D kinds (its default by solver classes where
+/// none was registered).
+ContactFunction3 GetContactFunction3(ShapeKind a, ShapeKind b);
+/// The 3D table's common-level function for a pair of 3D kinds.
+LevelFunction3 GetLevelFunction3(ShapeKind a, ShapeKind b);
+
+/// Common level through the 3D dispatch table (Dispatch3.cpp, the same PairTable as 2D's): spheres in closed form; ellipsoids (and spheres) by
 /// Newton on Perram and Wertheim's one-dimensional form; other smooth convex pairs by Newton
 /// (warm-started from `warm` when valid, then cold) with the min–max fallback; pairs with an
 /// exponent below 2 by the grid fixed point. `newton` and `grid` force one solver. Updates `warm`.

@@ -3,6 +3,7 @@
 
 #include "b2analytic/3d/Math3.h"
 #include "b2analytic/Shape.h" // InvalidParameter, FormatNumber
+#include "b2analytic/ShapeKind.h"
 
 #include <atomic>
 #include <memory>
@@ -78,11 +79,11 @@ public:
 	Shape3(const Shape3&) = delete;
 	Shape3& operator=(const Shape3&) = delete;
 
-	/// The kind's name, which selects the solvers: "sphere", "ellipsoid", "superellipsoid" (smooth)
-	/// or "convex_superellipsoid" (an exponent below 2).
-	const char* KindName() const { return m_kindName; }
-	/// The kind's row and column in the 3D dispatch table (Kind3Names' index of KindName).
-	int Kind() const { return m_kind; }
+	/// The kind, a registered kind of dimension 3, which selects the solvers: its row and column
+	/// in the 3D dispatch table (BuiltinKinds3 for the superellipsoid family).
+	ShapeKind Kind() const { return m_kind; }
+	/// The kind's name ("sphere", "ellipsoid", "superellipsoid", "convex_superellipsoid", ...).
+	const char* KindName() const { return b2a::KindName(m_kind); }
 	/// A readable description with every parameter, e.g. "ellipsoid(a=2, b=1, c=1)".
 	virtual std::string Describe() const = 0;
 
@@ -132,16 +133,16 @@ public:
 	static constexpr int kDefaultSampleCount = 256;
 
 protected:
-	/// The constant properties; derived constructors set the rest with Finalize.
-	Shape3(const char* kindName, double surfaceLevel, bool convex, bool smoothConvex, double levelPower);
+	/// The constant properties; derived constructors set the rest with Finalize. Throws
+	/// InvalidParameter (field 'kind') unless `kind` is a registered kind of dimension 3.
+	Shape3(ShapeKind kind, double surfaceLevel, bool convex, bool smoothConvex, double levelPower);
 	/// Set the bounding radius and mass properties (closed forms of the derived class).
 	void Finalize(double boundingRadius, const MassProperties3& mass);
 	/// Build the samples for about `count` points (called once per count, under a lock).
 	virtual SurfaceSamples3 BuildSamples(int count) const = 0;
 
 private:
-	const char* m_kindName;
-	int m_kind;
+	ShapeKind m_kind;
 	double m_surfaceLevel;
 	bool m_convex;
 	bool m_smoothConvex;
@@ -153,12 +154,6 @@ private:
 	mutable std::vector<std::pair<int, std::unique_ptr<const SurfaceSamples3>>> m_samples;
 	mutable std::atomic<const SurfaceSamples3*> m_lastSamples{nullptr}; // one of m_samples' (never removed)
 };
-
-/// The 3D shape kinds in the dispatch table's order: "sphere", "ellipsoid", "superellipsoid",
-/// "convex_superellipsoid".
-inline constexpr const char* kKind3Names[] = {"sphere", "ellipsoid", "superellipsoid", "convex_superellipsoid"};
-/// Number of 3D shape kinds.
-inline constexpr int kKind3Count = 4;
 
 /// Shared, immutable handle to a 3D shape.
 using Shape3Ptr = std::shared_ptr<const Shape3>;
