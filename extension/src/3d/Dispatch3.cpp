@@ -15,7 +15,8 @@
 //  Ellipsoid   Perram–Wertheim's one-dimensional form, polished → Newton
 //  Newton      Newton from the warm start → Newton cold → min–max → Grid
 //  Grid        the grid's fixed point → the same with sixteen times the samples
-//  "from L": coincident centres → the axis of least overlap; else ContactFromLevel of chain L.
+//  "from L": coincident centres → the axis of least overlap; else ContactFromLevel of chain L
+//  (where L gives up on centres within 1e-3 of the size: the axis of least overlap).
 //  Explicit methods, for any pair: MethodChoice::newton: Newton alone (warm, else cold);
 //  MethodChoice::grid: Grid.
 #include "3d/Solvers3.h"
@@ -104,7 +105,9 @@ LevelResult3 NewtonAlone(const Shape3& a, const Pose3& pa, const Shape3& b, cons
 }
 
 // The contact from a level chain: the axis of least overlap where the centres coincide, else
-// ContactFromLevel of the chain's answer (recorded as the next warm start).
+// ContactFromLevel of the chain's answer (recorded as the next warm start). Where the chain
+// gives up on centres within 1e-3 of the pair's size of each other (a common level near 0, the
+// particles deep through each other: thin plates crossing), the axis of least overlap too.
 template <LevelFunction3 Level>
 ContactResult3 ContactOf(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb, const SolverOptions& options,
                          WarmStart3* warm)
@@ -117,6 +120,13 @@ ContactResult3 ContactOf(const Shape3& a, const Pose3& pa, const Shape3& b, cons
 	}
 	const LevelResult3 r = Level(a, pa, b, pb, options, warm);
 	RecordWarmStart3(warm, pa, pb, r);
+	if (!r.Ok() && Distance(pa.p, pb.p) <= 1e-3 * 0.5 * (a.BoundingRadius() + b.BoundingRadius()))
+	{
+		ContactResult3 c = OverlapAxisContact3(a, pa, b, pb);
+		c.status = SolveStatus::convergedAfterFallback;
+		c.iterations += r.iterations;
+		return c;
+	}
 	return ContactFromLevel(a, pa, b, pb, r, r.Ok() && r.level <= 1.0);
 }
 
