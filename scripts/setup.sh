@@ -19,6 +19,7 @@ packages=(
 	libstb-dev              # stb_image_write: the screenshots as PNG (and stb_image, which the tests read them with)
 	xvfb xauth              # a virtual X display (xvfb-run) for the headless tests
 	libgl1-mesa-dri libglx-mesa0 # Mesa's OpenGL, its software renderer (llvmpipe) included
+	libbullet-dev           # Bullet's GJK/EPA, the 3D pair benchmark's baseline (not the library)
 )
 
 for arg in "$@"; do

@@ -1,5 +1,6 @@
 // b2analytic benchmarks: shared timing and output code.
 #include "BenchCommon.h"
+#include "common/Plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,15 @@
 
 namespace b2a::bench
 {
+
+std::mt19937_64 FamilyRng(std::uint64_t seed, const std::string& name)
+{
+	std::uint64_t hash = 1469598103934665603ull; // FNV-1a: stable across compilers (std::hash is not)
+	for (const unsigned char ch : name)
+		hash = (hash ^ ch) * 1099511628211ull;
+	std::seed_seq seq{std::uint32_t(seed), std::uint32_t(seed >> 32), std::uint32_t(hash), std::uint32_t(hash >> 32)};
+	return std::mt19937_64(seq);
+}
 
 MachineInfo GetMachineInfo()
 {

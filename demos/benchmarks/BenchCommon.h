@@ -6,6 +6,10 @@
 
 #include "common/DemoCommon.h"
 
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -94,6 +98,37 @@ PairedTiming MedianPairedPerQuery(Pass&& pass, Baseline&& baseline, int queriesP
 	}
 	return {Median(std::move(times)), Median(std::move(baseTimes)), Median(std::move(ratios))};
 }
+
+/// A method's time per query on its poses and its ratio to a baseline on the same poses: the two
+/// timed in alternation (MedianPairedPerQuery), so that the ratio does not take the machine's
+/// drift between rows; the baseline itself gets its own median time and ratio 1.
+template <class Pass, class Baseline>
+PairedTiming TimeAgainstBaseline(Pass&& pass, Baseline&& baseline, bool isBaseline, int queriesPerPass, int repeats)
+{
+	if (isBaseline)
+		return {MedianNanosecondsPerQuery(pass, queriesPerPass, repeats), 0.0, 1.0};
+	PairedTiming t = MedianPairedPerQuery(pass, baseline, queriesPerPass, repeats, ThreadCpuNanoseconds);
+	t.baselineNs = 0.0;
+	return t;
+}
+
+/// Keeps the items (pair families: anything with a `name`) whose names are in `names`, in the
+/// items' order; all of them where `names` is empty (the option --families not given).
+template <class Item>
+void SelectFamilies(std::vector<Item>& items, const std::vector<std::string>& names)
+{
+	if (names.empty())
+		return;
+	std::vector<Item> chosen;
+	for (Item& item : items)
+		if (std::find(names.begin(), names.end(), item.name) != names.end())
+			chosen.push_back(std::move(item));
+	items = std::move(chosen);
+}
+
+/// A generator of a pair family's own, seeded by the run's seed and the family's name (FNV-1a,
+/// stable across compilers), so that a family's poses do not depend on which others run.
+std::mt19937_64 FamilyRng(std::uint64_t seed, const std::string& name);
 
 /// A table written both as CSV (machine-readable) and as Markdown (for a reader).
 struct Table

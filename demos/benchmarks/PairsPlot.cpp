@@ -15,8 +15,8 @@ struct MethodStyle
 {
 	const char* prefix; // the method names it covers, by their start
 	const char* colour;
-	demo::Marker markers[4]; // by variant, in the order of `variants`
-	const char* variants[4];
+	demo::Marker markers[5]; // by variant, in the order of `variants`
+	const char* variants[5];
 };
 
 // The kinds of methods and their variants (an unknown method is drawn black, as a circle).
@@ -28,6 +28,9 @@ const MethodStyle kStyles[] = {
 	 {"64", "256", "1024", "4096"}},
 	{"box2d_gjk", demo::palette::skyBlue, {demo::Marker::circle, demo::Marker::square, demo::Marker::triangle, demo::Marker::diamond},
 	 {"8", "16", "32", "64"}},
+	{"bullet_gjk_epa", demo::palette::skyBlue,
+	 {demo::Marker::circle, demo::Marker::square, demo::Marker::triangle, demo::Marker::diamond, demo::Marker::triangleDown},
+	 {"32", "64", "128", "256", "512"}},
 	{"box2d_", demo::palette::purple, {demo::Marker::circle, demo::Marker::square, demo::Marker::triangle}, {"polygon8", "obb", "circle"}},
 };
 
@@ -41,7 +44,7 @@ void Style(const std::string& method, demo::Series& s)
 		if (method.compare(0, prefix.size(), prefix) != 0)
 			continue;
 		s.colour = style.colour;
-		for (int v = 0; v < 4 && style.variants[v]; ++v)
+		for (int v = 0; v < 5 && style.variants[v]; ++v)
 		{
 			const std::string variant = style.variants[v];
 			if (method.size() >= variant.size() && method.compare(method.size() - variant.size(), variant.size(), variant) == 0)

@@ -17,7 +17,8 @@ struct PairsPlotPoint
 
 /// The SVG plot of a family's methods: time per query against the largest point error, both on
 /// log scales. Each kind of method has its colour (Newton, the automatic path, the paper's plain
-/// grid, the refined grid, Box2D's polygons, GJK on polygons) and each variant of it its marker.
+/// grid, the refined grid, Box2D's polygons, GJK on polygons, Bullet's GJK/EPA on hulls) and each
+/// variant of it its marker.
 /// Exact answers (error below 1e-17) are plotted at 1e-17 so that they show.
 std::string PairsPlot(const std::string& family, const std::vector<PairsPlotPoint>& points);
 

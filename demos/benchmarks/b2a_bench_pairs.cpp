@@ -197,17 +197,6 @@ Pose PlaceB(const Family& f, const Pose& pa, double angleB, Vec2 u, double gap)
 	return Pose(pa.p + 0.5 * (lo + hi) * u, angleB);
 }
 
-// Each family's poses come from a generator of its own, seeded by the run's seed and the
-// family's name, so that `--families` reproduces a family's rows of the full run exactly.
-std::mt19937_64 FamilyRng(std::uint64_t seed, const std::string& name)
-{
-	std::uint64_t hash = 1469598103934665603ull; // FNV-1a: stable across compilers (std::hash is not)
-	for (const unsigned char ch : name)
-		hash = (hash ^ ch) * 1099511628211ull;
-	std::seed_seq seq{std::uint32_t(seed), std::uint32_t(seed >> 32), std::uint32_t(hash), std::uint32_t(hash >> 32)};
-	return std::mt19937_64(seq);
-}
-
 std::vector<PairPose> MakePoses(const Family& f, int perClass, int motions, std::mt19937_64& rng)
 {
 	std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -575,15 +564,7 @@ int main(int argc, char** argv)
 	const MachineInfo machine = GetMachineInfo();
 	Progress progress("b2a_bench_pairs");
 
-	if (!familyNames.empty())
-	{
-		// Only the families named, in the table's order.
-		std::vector<Family> chosen;
-		for (Family& f : families)
-			if (std::find(familyNames.begin(), familyNames.end(), f.name) != familyNames.end())
-				chosen.push_back(std::move(f));
-		families = std::move(chosen);
-	}
+	SelectFamilies(families, familyNames); // in the table's order
 	std::vector<Row> rows;
 	for (size_t fi = 0; fi < families.size(); ++fi)
 	{
@@ -643,22 +624,13 @@ int main(int argc, char** argv)
 					Accumulate(answers[i], r.common, poses[which[i]].cls, m.convention, size, row.errors);
 			}
 			// Each method against the 8-gons on its own poses (a warm row's are the motions), the
-			// two timed in alternation (MedianPairedPerQuery), so that the ratio, the target's
-			// measure, does not take the machine's drift between rows.
+			// two timed in alternation, so that the ratio, the target's measure, does not take
+			// the machine's drift between rows.
 			const auto pass = [&] { m.run(f, poses, which, nullptr); };
-			if (polygon8 && &m != polygon8)
-			{
-				const PairedTiming t = MedianPairedPerQuery(
-					pass, [&] { polygon8->run(f, poses, which, nullptr); }, int(which.size()), repeats, ThreadCpuNanoseconds);
-				row.ns = t.ns;
-				row.ratio = t.ratio;
-			}
-			else
-			{
-				row.ns = MedianNanosecondsPerQuery(pass, int(which.size()), repeats);
-				if (polygon8)
-					row.ratio = 1.0;
-			}
+			const PairedTiming t = TimeAgainstBaseline(
+				pass, [&] { polygon8->run(f, poses, which, nullptr); }, !polygon8 || &m == polygon8, int(which.size()), repeats);
+			row.ns = t.ns;
+			row.ratio = polygon8 ? t.ratio : std::nan("");
 			rows.push_back(row);
 		}
 		std::fprintf(stderr, "b2a_bench_pairs: %s done (%zu poses)\n", f.name.c_str(), poses.size());

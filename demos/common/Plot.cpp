@@ -244,6 +244,10 @@ std::string MarkerSvg(Marker shape, double x, double y, double r, const std::str
 		std::snprintf(b, sizeof(b), "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"%s\"/>\n", x, y - 1.2 * r, x + r, y, x,
 		              y + 1.2 * r, x - r, y, colour.c_str());
 		break;
+	case Marker::triangleDown:
+		std::snprintf(b, sizeof(b), "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"%s\"/>\n", x, y + 1.15 * r, x + r, y - 0.75 * r,
+		              x - r, y - 0.75 * r, colour.c_str());
+		break;
 	case Marker::circle:
 	default:
 		std::snprintf(b, sizeof(b), "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.1f\" fill=\"%s\"/>\n", x, y, r, colour.c_str());

@@ -13,7 +13,8 @@ enum class Marker
 	circle,
 	square,
 	triangle,
-	diamond
+	diamond,
+	triangleDown
 };
 
 /// One curve or set of points of a plot.

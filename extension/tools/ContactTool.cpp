@@ -1,64 +1,30 @@
 // b2analytic: b2a_contact requests: parse a line, solve, format the answer.
 #include "ContactTool.h"
+#include "ContactToolCommon.h"
 
 #include "b2analytic/b2analytic.h"
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <memory>
 #include <set>
 #include <stdexcept>
+#include <string>
 
 namespace b2a::tool
 {
 
 namespace
 {
-using json = nlohmann::ordered_json; // keeps "id" and "status" first in the answers
-
-// A request error: the message names the field.
-struct RequestError : std::runtime_error
-{
-	using std::runtime_error::runtime_error;
-};
-
-double Number(const json& obj, const std::string& key, const std::string& path, bool required, double fallback)
-{
-	const auto it = obj.find(key);
-	if (it == obj.end())
-	{
-		if (required)
-			throw RequestError("field '" + path + key + "' is missing");
-		return fallback;
-	}
-	if (!it->is_number())
-		throw RequestError("field '" + path + key + "' must be a number, got " + it->dump());
-	const double v = it->get<double>();
-	if (!std::isfinite(v))
-		throw RequestError("field '" + path + key + "' must be finite, got " + it->dump());
-	return v;
-}
-
-void CheckKeys(const json& obj, const std::set<std::string>& allowed, const std::string& path, const std::string& what)
-{
-	for (auto it = obj.begin(); it != obj.end(); ++it)
-		if (!allowed.count(it.key()))
-		{
-			std::string list;
-			for (const auto& k : allowed)
-				list += (list.empty() ? "" : ", ") + k;
-			throw RequestError("field '" + path + it.key() + "' is not a field of " + what + " (expected " + list + ")");
-		}
-}
-
 struct ParsedShape
 {
 	std::shared_ptr<const Shape> shape;
 	Pose pose;
+	Vec2 velocity;              // toi only
+	double angularVelocity = 0; // toi only
 };
 
-ParsedShape ParseShape(const json& request, const std::string& key)
+// A 2D shape; with `motion` (mode toi) it may carry "v" [vx, vy] and "w" (a number).
+ParsedShape ParseShape(const json& request, const std::string& key, bool motion = false)
 {
 	const auto it = request.find(key);
 	if (it == request.end())
@@ -74,27 +40,32 @@ ParsedShape ParseShape(const json& request, const std::string& key)
 		throw RequestError("field '" + path + "type' must be a string, got " + type->dump());
 	const std::string t = type->get<std::string>();
 	ParsedShape out;
+	auto keys = [motion](std::set<std::string> own) {
+		if (motion)
+			own.insert({"v", "w"});
+		return own;
+	};
 	try
 	{
 		if (t == "superellipse")
 		{
-			CheckKeys(s, {"type", "a", "b", "n", "m", "x", "y", "angle"}, path, "a superellipse");
+			CheckKeys(s, keys({"type", "a", "b", "n", "m", "x", "y", "angle"}), path, "a superellipse");
 			out.shape = MakeSuperellipse(Number(s, "a", path, true, 0), Number(s, "b", path, true, 0),
 			                             Number(s, "n", path, true, 0), Number(s, "m", path, true, 0));
 		}
 		else if (t == "ellipse")
 		{
-			CheckKeys(s, {"type", "a", "b", "x", "y", "angle"}, path, "an ellipse");
+			CheckKeys(s, keys({"type", "a", "b", "x", "y", "angle"}), path, "an ellipse");
 			out.shape = MakeEllipse(Number(s, "a", path, true, 0), Number(s, "b", path, true, 0));
 		}
 		else if (t == "circle")
 		{
-			CheckKeys(s, {"type", "r", "x", "y", "angle"}, path, "a circle");
+			CheckKeys(s, keys({"type", "r", "x", "y", "angle"}), path, "a circle");
 			out.shape = MakeCircle(Number(s, "r", path, true, 0));
 		}
 		else if (t == "heart")
 		{
-			CheckKeys(s, {"type", "alpha", "x", "y", "angle"}, path, "a heart");
+			CheckKeys(s, keys({"type", "alpha", "x", "y", "angle"}), path, "a heart");
 			out.shape = MakeHeart(Number(s, "alpha", path, true, 0));
 		}
 		else
@@ -109,17 +80,46 @@ ParsedShape ParseShape(const json& request, const std::string& key)
 		throw RequestError("shape '" + key + "': " + e.what());
 	}
 	out.pose = Pose(Vec2(Number(s, "x", path, false, 0.0), Number(s, "y", path, false, 0.0)), Number(s, "angle", path, false, 0.0));
+	const std::vector<double> v = Numbers(s, "v", path, 2, false, {0.0, 0.0});
+	out.velocity = Vec2(v[0], v[1]);
+	out.angularVelocity = Number(s, "w", path, false, 0.0);
 	return out;
 }
 
 bool SuperellipseFamily(const Shape& s)
 {
-	return s.Family() == ShapeFamily::circle || s.Family() == ShapeFamily::ellipse || s.Family() == ShapeFamily::superellipse;
+	return dynamic_cast<const SuperellipseShape*>(&s) != nullptr;
 }
 
-json Vec(Vec2 v)
+// The shape's type as the request names it ("heart"): its description up to the parameters.
+std::string TypeName(const Shape& s)
 {
-	return json::array({v.x, v.y});
+	const std::string d = s.Describe();
+	return d.substr(0, d.find('('));
+}
+
+// Mode toi in 2D: the first contact of two shapes moving with constant linear and angular
+// velocities, or "time": null when none before t_max.
+json AnswerTimeOfImpact(const json& request, const json& id)
+{
+	const ParsedShape a = ParseShape(request, "a", true), b = ParseShape(request, "b", true);
+	const double tMax = Number(request, "t_max", "", true, 0.0);
+	if (!(tMax >= 0.0))
+		throw RequestError("field 't_max' must be >= 0, got " + request["t_max"].dump());
+	const Motion ma{a.pose, a.velocity, a.angularVelocity}, mb{b.pose, b.velocity, b.angularVelocity};
+	const TimeOfImpactResult r = TimeOfImpact(*a.shape, ma, *b.shape, mb, tMax);
+	if (!r.Ok())
+		throw RequestError(std::string("time of impact failed: ") + r.failure);
+	const ContactResult& c = r.contact;
+	if (!std::isfinite(r.time) || !std::isfinite(c.separation) || !IsFinite(c.point) || !IsFinite(c.normal) || !IsFinite(c.pointA) ||
+	    !IsFinite(c.pointB))
+		throw RequestError("solver returned a non-finite value");
+	json out;
+	out["id"] = id;
+	out["status"] = "ok";
+	out["mode"] = "toi";
+	WriteTimeOfImpact(out, r);
+	return out;
 }
 
 json Answer(const json& request, json& id)
@@ -128,7 +128,7 @@ json Answer(const json& request, json& id)
 		throw RequestError("a request must be a JSON object, got " + request.dump());
 	if (request.contains("id"))
 		id = request["id"];
-	CheckKeys(request, {"id", "mode", "method", "a", "b"}, "", "a request");
+	CheckKeys(request, {"id", "mode", "method", "a", "b", "t_max"}, "", "a request");
 	std::string mode = "contact", method = "auto";
 	if (request.contains("mode"))
 	{
@@ -136,8 +136,10 @@ json Answer(const json& request, json& id)
 			throw RequestError("field 'mode' must be a string, got " + request["mode"].dump());
 		mode = request["mode"].get<std::string>();
 	}
-	if (mode != "common" && mode != "scale_a" && mode != "contact")
-		throw RequestError("field 'mode': unknown mode \"" + mode + "\" (expected common, scale_a or contact)");
+	if (mode != "common" && mode != "scale_a" && mode != "contact" && mode != "toi")
+		throw RequestError("field 'mode': unknown mode \"" + mode + "\" (expected common, scale_a, contact or toi)");
+	if (request.contains("t_max") && mode != "toi")
+		throw RequestError("field 't_max' belongs to mode 'toi' only (mode is '" + mode + "')");
 	if (request.contains("method"))
 	{
 		if (!request["method"].is_string())
@@ -154,6 +156,14 @@ json Answer(const json& request, json& id)
 	else
 		throw RequestError("field 'method': unknown method \"" + method + "\" (expected auto, newton or grid)");
 
+	const bool a3 = Is3dType(ShapeType(request, "a")), b3 = Is3dType(ShapeType(request, "b"));
+	if (a3 != b3)
+		throw RequestError(std::string("field '") + (a3 ? "b" : "a") + ".type': shape '" + (a3 ? "a" : "b") +
+		                   "' is 3D; both shapes of a request are 2D or both 3D");
+	if (a3)
+		return Answer3(request, mode, method);
+	if (mode == "toi")
+		return AnswerTimeOfImpact(request, id);
 	const ParsedShape a = ParseShape(request, "a");
 	const ParsedShape b = ParseShape(request, "b");
 	const Shape& sa = *a.shape;
@@ -172,7 +182,7 @@ json Answer(const json& request, json& id)
 		{
 			if (!SuperellipseFamily(sa) || !SuperellipseFamily(sb))
 				throw RequestError("mode 'common' is defined for the superellipse family only (superellipse, ellipse, "
-				                   "circle); use mode 'scale_a' for " + std::string(FamilyName(SuperellipseFamily(sa) ? sb.Family() : sa.Family())) + " shapes");
+				                   "circle); use mode 'scale_a' for " + TypeName(SuperellipseFamily(sa) ? sb : sa) + " shapes");
 			level = SolveCommonLevel(sa, a.pose, sb, b.pose, choice);
 			touching = level.level <= 1.0;
 		}
@@ -194,16 +204,7 @@ json Answer(const json& request, json& id)
 	out["id"] = id;
 	out["status"] = "ok";
 	out["mode"] = mode;
-	out["method"] = MethodName(c.method);
-	out["convergence"] = StatusName(c.status);
-	out["scale"] = c.level;
-	out["point"] = Vec(c.point);
-	out["normal"] = Vec(c.normal);
-	out["point_a"] = Vec(c.pointA);
-	out["point_b"] = Vec(c.pointB);
-	out["separation"] = c.separation;
-	out["touching"] = c.touching;
-	out["iterations"] = c.iterations;
+	WriteContact(out, c);
 	return out;
 }
 } // namespace
@@ -244,9 +245,15 @@ const char* ContactToolSummary()
 
 const char* ContactToolHelp()
 {
+	static const std::string text = std::string(ContactTool2dHelp()) + ContactTool3Help();
+	return text.c_str();
+}
+
+const char* ContactTool2dHelp()
+{
 	return R"(Each input line is one JSON object (blank lines are skipped):
-  {"id": <any JSON value>, "mode": "common" | "scale_a" | "contact",
-   "method": "auto" | "newton" | "grid", "a": <shape>, "b": <shape>}
+  {"id": <any JSON value>, "mode": "common" | "scale_a" | "contact" | "toi",
+   "method": "auto" | "newton" | "grid", "a": <shape>, "b": <shape>, "t_max": T (toi only)}
 mode defaults to "contact", method to "auto". A shape is one of
   {"type": "superellipse", "a": A, "b": B, "n": N, "m": M, "x": X, "y": Y, "angle": T}
   {"type": "ellipse", "a": A, "b": B, "x": X, "y": Y, "angle": T}

@@ -14,8 +14,11 @@ std::string AnswerContactRequest(const std::string& line, bool& ok);
 /// The first line of `b2a_contact --help`: what the tool does.
 const char* ContactToolSummary();
 
-/// The text `b2a_contact --help` prints after the usage and the options: the request and answer
-/// formats, the exit status and an example.
+/// The text `b2a_contact --help` prints after the usage and the options: the 2D part (request and
+/// answer formats, exit status, an example), then the 3D shapes and the toi mode.
 const char* ContactToolHelp();
+
+/// The --help text's part on 2D shapes and modes.
+const char* ContactTool2dHelp();
 
 } // namespace b2a::tool

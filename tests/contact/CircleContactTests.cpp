@@ -210,9 +210,9 @@ TEST_CASE("circles made as ellipses, superellipses, zeta-forms and user shapes b
 	const CircleCase c{r1, r2, Pose(Vec2(0.4, -0.2), 0.7), Pose(Vec2(2.1, 1.0), -2.0)}; // d ≈ 2.08 ≥ r1 + r2: apart
 	const CircleCase o{r1, r2, Pose(Vec2(0.4, -0.2), 0.7), Pose(Vec2(1.5, 0.6), -2.0)}; // d ≈ 1.36: overlapping
 	// Every way to make a circle lands in the circle family (closed forms apply).
-	CHECK(MakeEllipse(r1, r1)->Family() == ShapeFamily::circle);
-	CHECK(MakeSuperellipse(r1, r1, 2.0, 2.0)->Family() == ShapeFamily::circle);
-	CHECK(SuperellipseShape::FromZeta(r1, r1, 1.0)->Family() == ShapeFamily::circle);
+	CHECK(MakeEllipse(r1, r1)->Kind() == BuiltinKinds::circle);
+	CHECK(MakeSuperellipse(r1, r1, 2.0, 2.0)->Kind() == BuiltinKinds::circle);
+	CHECK(SuperellipseShape::FromZeta(r1, r1, 1.0)->Kind() == BuiltinKinds::circle);
 
 	const std::vector<std::pair<const char*, ShapePtr>> asA = {
 		{"MakeEllipse(r, r)", MakeEllipse(r1, r1)},

@@ -72,7 +72,7 @@ double SurfaceTolerance(const Shape& s, const Pose& pose, Vec2 p)
 {
 	const double eps = std::numeric_limits<double>::epsilon();
 	const double delta = 8.0 * eps * (Length(p) + Length(pose.p) + s.BoundingRadius());
-	if (s.Family() == ShapeFamily::heart)
+	if (dynamic_cast<const HeartShape*>(&s))
 		return 1e-12 + std::pow(delta, 2.0 / 3.0) / std::sqrt(s.SurfaceLevel());
 	double gradient = 2.0 / s.BoundingRadius(); // user shapes: ellipse-like
 	if (const auto* se = dynamic_cast<const SuperellipseShape*>(&s))

@@ -75,7 +75,7 @@ inline bool CentreInside(const PlacedPair& c)
 /// True when ComputeContact's automatic path runs the grid for this pair.
 inline bool UsesGrid(const ShapePair& p)
 {
-	const bool circles = p.a->Family() == ShapeFamily::circle && p.b->Family() == ShapeFamily::circle;
+	const bool circles = p.a->Kind() == BuiltinKinds::circle && p.b->Kind() == BuiltinKinds::circle;
 	return !circles && !(p.a->IsSmoothConvex() && p.b->IsSmoothConvex());
 }
 

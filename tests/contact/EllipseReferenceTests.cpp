@@ -279,9 +279,9 @@ TEST_CASE("ellipses: EllipseContact serves ellipse and circle pairs, points to 1
 	// long-double line-ellipse reference, cold and after a motion of 1e-3 of the size: a warm
 	// start 1e-3 off is at ~1e-9 after one Halley step, so the second is the last (measured:
 	// worst error 4.5e-15; 3.5e-15 before the Halley steps stopped waiting for 1/det).
-	CHECK((GetContactFunction(ShapeFamily::ellipse, ShapeFamily::ellipse) == &EllipseContact));
-	CHECK((GetContactFunction(ShapeFamily::ellipse, ShapeFamily::circle) == &EllipseContact));
-	CHECK((GetContactFunction(ShapeFamily::circle, ShapeFamily::ellipse) == &EllipseContact));
+	CHECK((GetContactFunction(BuiltinKinds::ellipse, BuiltinKinds::ellipse) == &EllipseContact));
+	CHECK((GetContactFunction(BuiltinKinds::ellipse, BuiltinKinds::circle) == &EllipseContact));
+	CHECK((GetContactFunction(BuiltinKinds::circle, BuiltinKinds::ellipse) == &EllipseContact));
 	const std::vector<LD> targets = {0.05L, 0.5L, 0.99L, 1.0L - 1e-6L, 1.0L + 1e-6L, 1.01L, 2.0L, 5.0L};
 	std::vector<EllipseCase> cases = Cases(7004, 16, targets, 4.0);
 	for (const EllipseCase& c : Cases(7005, 8, targets, 4.0, true))

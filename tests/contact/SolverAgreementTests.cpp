@@ -213,7 +213,7 @@ TEST_CASE("user shapes: an ellipse given only by its implicit function matches t
 			const auto& shape = item.first;
 			const auto& tol = item.second;
 			INFO(shape->Describe() << " at " << cb.x << "," << cb.y);
-			CHECK(shape->Family() == ShapeFamily::user);
+			CHECK(dynamic_cast<const UserShape*>(shape.get()) != nullptr);
 			const LevelResult r = SolveCommonLevel(*shape, pa, *other, pb);
 			REQUIRE(r.Ok());
 			CHECK(LevelErr(r.level, want.level) <= tol);

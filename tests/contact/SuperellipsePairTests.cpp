@@ -83,13 +83,13 @@ double Size(const Pair& p) { return 0.5 * (p.a->BoundingRadius() + p.b->Bounding
 
 TEST_CASE("superellipse pairs: the dispatch table sends smooth superellipses to SuperellipseContact")
 {
-	for (ShapeFamily other : {ShapeFamily::superellipse, ShapeFamily::ellipse, ShapeFamily::circle})
+	for (ShapeKind other : {BuiltinKinds::superellipse, BuiltinKinds::ellipse, BuiltinKinds::circle})
 	{
 		// (Function pointers compared as bool: doctest cannot print them.)
-		CHECK(bool(GetContactFunction(ShapeFamily::superellipse, other) == &SuperellipseContact));
-		CHECK(bool(GetContactFunction(other, ShapeFamily::superellipse) == &SuperellipseContact));
+		CHECK(bool(GetContactFunction(BuiltinKinds::superellipse, other) == &SuperellipseContact));
+		CHECK(bool(GetContactFunction(other, BuiltinKinds::superellipse) == &SuperellipseContact));
 	}
-	CHECK(bool(GetContactFunction(ShapeFamily::ellipse, ShapeFamily::ellipse) == &EllipseContact));
+	CHECK(bool(GetContactFunction(BuiltinKinds::ellipse, BuiltinKinds::ellipse) == &EllipseContact));
 }
 
 TEST_CASE("superellipse pairs: integer and non-integer exponents from 2 to 12 match the long-double reference, cold")

@@ -78,7 +78,7 @@ namespace
 // Does either shape have corners where its gradient jumps (heart cusps, n = 1 vertices)?
 bool HasCorners(const Shape& s)
 {
-	if (s.Family() == ShapeFamily::heart)
+	if (dynamic_cast<const HeartShape*>(&s))
 		return true;
 	const auto* se = dynamic_cast<const SuperellipseShape*>(&s);
 	return se && (se->N() <= 1.0 || se->M() <= 1.0);

@@ -124,6 +124,35 @@ TEST_CASE("b2a_demo_collision: fixed stepping finds the first contact within one
 	}
 }
 
+TEST_CASE("b2a_demo_superellipsoids: the paper's Figure 17 touches within 1e-3 ms of 0.1924 ms")
+{
+	const json s = RunDemo(B2A_DEMO_SUPERELLIPSOIDS, "superellipsoids");
+	const json& c = s["contact"];
+	const double exact = c["time_ms"];
+	CHECK(std::fabs(exact - 0.1924) < 1e-3);
+	CHECK(std::fabs(c["difference_from_paper_ms"].get<double>() - (exact - 0.1924)) < 1e-15);
+	CHECK(std::fabs(c["separation_mm"].get<double>()) < 1e-9);
+	CHECK(std::fabs(c["common_level"].get<double>() - 1.0) < 1e-11);
+	// At the contact point both particles are at their own level (on both surfaces).
+	CHECK(std::fabs(c["level_i_at_point"].get<double>() - 1.0) < 1e-9);
+	CHECK(std::fabs(c["level_j_at_point"].get<double>() - 1.0) < 1e-9);
+	double normal = 0.0;
+	for (int i = 0; i < 3; ++i)
+		normal += c["normal"][i].get<double>() * c["normal"][i].get<double>();
+	CHECK(std::fabs(normal - 1.0) < 1e-12);
+	for (const json& r : s["fixed_stepping"])
+	{
+		// The first touching sample k·dt is at or after the exact time, late by less than a step.
+		const double dt = r["dt_ms"], t = r["first_touching_step_ms"];
+		CHECK(t >= exact - 1e-12);
+		CHECK(t - exact < dt);
+	}
+	for (const json& f : s["files"])
+		CHECK(Exists("demo_out/superellipsoids/" + f.get<std::string>()));
+	CHECK(Exists("demo_out/superellipsoids/figure17.svg"));
+	CHECK(Exists("demo_out/superellipsoids/stepping_error.svg"));
+}
+
 TEST_CASE("b2a_demo_beverloo: in the quick run the flow rate grows with the outlet and the fit is sane")
 {
 	const json s = RunDemo(B2A_DEMO_BEVERLOO, "beverloo");

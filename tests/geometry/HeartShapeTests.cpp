@@ -15,7 +15,7 @@ using namespace b2a::test;
 TEST_CASE("heart: the level is x^2 + y^2 - cbrt(x^2 y^3) and the particle is where G <= 0")
 {
 	const auto heart = MakeHeart(1.7);
-	CHECK(heart->Family() == ShapeFamily::heart);
+	CHECK(heart->Kind() == BuiltinKinds::nonConvex);
 	CHECK(heart->SurfaceLevel() == 1.7);
 	CHECK(heart->Alpha() == 1.7);
 	CHECK(heart->Describe() == "heart(alpha=1.7)");

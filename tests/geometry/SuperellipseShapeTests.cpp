@@ -11,15 +11,15 @@
 using namespace b2a;
 using namespace b2a::test;
 
-TEST_CASE("superellipse: family, flags and description follow the parameters")
+TEST_CASE("superellipse: kind, flags and description follow the parameters")
 {
 	const auto circle = MakeCircle(2.0);
-	CHECK(circle->Family() == ShapeFamily::circle);
+	CHECK(circle->Kind() == BuiltinKinds::circle);
 	CHECK(circle->Describe() == "circle(r=2)");
-	CHECK(std::string(FamilyName(circle->Family())) == "circle");
+	CHECK(std::string(KindName(circle->Kind())) == "circle");
 
 	const auto ellipse = MakeEllipse(3.0, 0.5);
-	CHECK(ellipse->Family() == ShapeFamily::ellipse);
+	CHECK(ellipse->Kind() == BuiltinKinds::ellipse);
 	CHECK(ellipse->Describe() == "ellipse(a=3, b=0.5)");
 	CHECK(ellipse->IsConvex());
 	CHECK(ellipse->IsSmoothConvex());
@@ -27,12 +27,12 @@ TEST_CASE("superellipse: family, flags and description follow the parameters")
 	CHECK(ellipse->SurfaceLevel() == 1.0);
 
 	// n = m = 2 with a = b is a circle whichever factory made it.
-	CHECK(MakeSuperellipse(1.5, 1.5, 2.0, 2.0)->Family() == ShapeFamily::circle);
-	CHECK(SuperellipseShape::FromZeta(1.5, 1.5, 1.0)->Family() == ShapeFamily::circle);
-	CHECK(SuperellipseShape::FromZeta(1.5, 0.5, 1.0)->Family() == ShapeFamily::ellipse);
+	CHECK(MakeSuperellipse(1.5, 1.5, 2.0, 2.0)->Kind() == BuiltinKinds::circle);
+	CHECK(SuperellipseShape::FromZeta(1.5, 1.5, 1.0)->Kind() == BuiltinKinds::circle);
+	CHECK(SuperellipseShape::FromZeta(1.5, 0.5, 1.0)->Kind() == BuiltinKinds::ellipse);
 
 	const auto smooth = MakeSuperellipse(1.0, 2.0, 4.0, 6.0);
-	CHECK(smooth->Family() == ShapeFamily::superellipse);
+	CHECK(smooth->Kind() == BuiltinKinds::superellipse);
 	CHECK(smooth->Describe() == "superellipse(a=1, b=2, n=4, m=6)");
 	CHECK(smooth->IsConvex());
 	CHECK(smooth->IsSmoothConvex());

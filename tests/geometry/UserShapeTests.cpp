@@ -21,7 +21,7 @@ TEST_CASE("user shape: the heart written as G(x, L) matches the built-in HeartSh
 	const double alpha = 1.3;
 	const auto user = MakeUserShape(UserHeartDef(alpha));
 	const auto heart = MakeHeart(alpha);
-	CHECK(user->Family() == ShapeFamily::user);
+	CHECK(user->Kind() == BuiltinKinds::nonConvex); // (declared neither convex nor smooth)
 	CHECK(user->Describe() == "user shape 'heart'");
 	CHECK(user->SurfaceLevel() == alpha);
 	CHECK(!user->IsConvex());

@@ -3,6 +3,7 @@
 
 #include "b2analytic/ContactResult.h"
 #include "b2analytic/Shape.h"
+#include "b2analytic/ShapeKind.h"
 
 namespace b2a
 {
@@ -39,12 +40,33 @@ LevelResult SolveCommonLevelMinMax(const Shape& a, const Pose& pa, const Shape& 
 LevelResult SolveCommonLevelGrid(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                                  const SolverOptions& options = {});
 
-/// Common level through the automatic path: Newton (warm-started when `warm` is valid) with the
-/// min–max fallback for smooth convex pairs, the grid fixed point for other convex pairs; fails
-/// with a clear reason for non-convex shapes (use SolveScaleA). Updates `warm` on success.
+/// Common level through the automatic path: the dispatch table's level function for the shapes'
+/// kinds (closed form for circles, Perram–Wertheim for ellipses, Newton (warm-started when
+/// `warm` is valid) with the min–max fallback for other smooth convex pairs, the grid fixed
+/// point for other convex pairs, a registered function where there is one); fails with a clear
+/// reason for non-convex shapes (use SolveScaleA). Updates `warm` on success.
 LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                              MethodChoice method = MethodChoice::automatic, const SolverOptions& options = {},
                              WarmStart* warm = nullptr);
+
+/// A Newton answer's slide, kept for the next warm start (internal to the library: a level
+/// function of the user's own leaves it alone).
+struct LevelSlide;
+
+/// A common-level function of the dispatch table: solves A and B's common level, starting from
+/// `warm` where it is valid (it may be null), and fills `slide` where it computes one (it may be
+/// null). SolveCommonLevel checks its answer and records it into the caller's warm start.
+using LevelFunction = LevelResult (*)(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                                      const SolverOptions& options, const WarmStart* warm, LevelSlide* slide);
+
+/// Register `function` as the common-level function of the pair of 2D kinds (a, b), in that
+/// order: pairs (b, a) call it swapped, without the warm start, and turn its answer back (normal
+/// reversed, multiplier inverted). As RegisterContactFunction otherwise (set-up only; throws
+/// InvalidParameter naming 'a', 'b' or 'function').
+void RegisterLevelFunction(ShapeKind a, ShapeKind b, LevelFunction function);
+
+/// The dispatch table's level function for (a, b) (see GetContactFunction).
+LevelFunction GetLevelFunction(ShapeKind a, ShapeKind b);
 
 /// Grid method (paper section 3): B held at its level `levelB` (its own surface level when NaN),
 /// the smallest level of A over B's surface samples, then refined between the neighbouring

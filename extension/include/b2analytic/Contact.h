@@ -1,22 +1,27 @@
-// b2analytic: the contact between two posed shapes, dispatched per shape pair.
+// b2analytic: the contact between two posed shapes, dispatched per pair of shape kinds.
 #pragma once
 
 #include "b2analytic/CommonLevel.h"
 #include "b2analytic/ContactResult.h"
 #include "b2analytic/Shape.h"
+#include "b2analytic/ShapeKind.h"
 
 namespace b2a
 {
 
-/// A contact function of the dispatch table. `warm` may be null.
+/// A contact function of the dispatch table. `warm` may be null. A function registered for a
+/// pair of kinds is final for it: ComputeContact calls it for every pair of shapes of those
+/// kinds, and nothing else decides.
 using ContactFunction = ContactResult (*)(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                                           const SolverOptions& options, WarmStart* warm);
 
 /// The contact between A and B (see ContactResult for its meaning).
-///  - automatic: the dispatch table: closed form for circle pairs; Perram and Wertheim's
-///    one-dimensional form for ellipse pairs (EllipseContact); Newton on the common level
-///    (warm-started from `warm`) with the min–max fallback for smooth, strictly convex pairs;
-///    the grid method with refinement (GridContact) for non-smooth or non-convex shapes.
+///  - automatic: the dispatch table's cell for the shapes' kinds (Shape::Kind): closed form for
+///    circle pairs (CircleContact); Perram and Wertheim's one-dimensional form for ellipse pairs
+///    (EllipseContact); the inline Newton for smooth superellipses (SuperellipseContact); Newton
+///    on the common level (warm-started from `warm`) with the min–max fallback for other smooth,
+///    strictly convex pairs (NewtonContact); the grid method with refinement (GridContact) for
+///    non-smooth or non-convex shapes; a registered function where there is one.
 ///  - newton: the common level by Newton alone (fails for shapes it cannot handle).
 ///  - grid: the grid method (GridContact) for any pair.
 /// Coincident centres (no level point between them) get the axis of least overlap.
@@ -41,27 +46,40 @@ ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, c
 /// The same contact seen from the other side: normal flipped, points swapped.
 ContactResult FlipContact(const ContactResult& c);
 
-/// Replace the dispatch table's entry for a pair of families (and the flipped entry, through
-/// FlipContact). Call before any contact is computed; not thread-safe against running solves.
-void RegisterContactFunction(ShapeFamily a, ShapeFamily b, ContactFunction function);
+/// Register `function` as the contact function of the pair of 2D kinds (a, b), in that order:
+/// pairs (b, a) call it with the shapes swapped and flip its answer (FlipContact), without the
+/// warm start. It replaces the cell's function (a built-in one, or the default by the kinds'
+/// solver classes). Call before contacts of the pair are computed; not synchronised with
+/// solves running on other threads. Throws InvalidParameter naming the field for a kind that
+/// is not a registered 2D kind ('a', 'b') or a null function ('function').
+void RegisterContactFunction(ShapeKind a, ShapeKind b, ContactFunction function);
 
-/// The dispatch table's current entry (for tests and tools).
-ContactFunction GetContactFunction(ShapeFamily a, ShapeFamily b);
+/// The dispatch table's contact function for (a, b): the registered one (which may be stored for
+/// (b, a) and called flipped), else the default by solver classes. Throws as
+/// RegisterContactFunction for kinds that are not registered 2D kinds.
+ContactFunction GetContactFunction(ShapeKind a, ShapeKind b);
 
-/// The table's building blocks, usable in a user's own registrations.
+/// The table's building blocks, usable in a user's own registrations. Each is a chain: its
+/// solver, and the fixed fallback where that gives up; coincident centres (no level point
+/// between them) get the axis of least overlap.
 /// Closed form for two circles.
 ContactResult CircleContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
-/// Two plain ellipses (or an ellipse and a circle): Perram and Wertheim's one-dimensional
-/// common level, points in closed form; the same answer as ConvexContact, sooner. Other shapes
-/// and the rare cases it does not handle go to ConvexContact.
+/// Two plain ellipses (or an ellipse and a circle, kinds ellipse and circle): Perram and
+/// Wertheim's one-dimensional common level, points in closed form; the same answer as
+/// NewtonContact, sooner. Where it does not finish (and for shapes other than SuperellipseShape's
+/// ellipses), the contact of the ellipse-pair level, then Newton's chain.
 ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
-/// Two smooth superellipses (n, m ≥ 2, or one of them an ellipse or circle): the common level by
-/// Newton with the levels evaluated inline; the same answer as ConvexContact, sooner. With
-/// integer exponents the last Newton steps (all of them from a warm start) run on the raw levels
-/// |x/a|^n + |y/b|^m, without the gauge's roots, and the points come from Halley steps along the
-/// normal. Other shapes and the rare cases it does not finish go to ConvexContact.
+/// Two smooth superellipses on the raw level (kinds superellipse, ellipse, circle): the common
+/// level by Newton with the levels evaluated inline; the same answer as NewtonContact, sooner.
+/// With integer exponents the last Newton steps (all of them from a warm start) run on the raw
+/// levels |x/a|^n + |y/b|^m, without the gauge's roots, and the points come from Halley steps
+/// along the normal. Where it does not finish (and for the ζ-form), NewtonContact's chain.
 ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
-/// Common level (Newton + min–max fallback) for smooth convex shapes; grid otherwise.
+/// Smooth, strictly convex pairs: the common level by Newton from the warm start, from the
+/// geometric start where that fails, by min–max where both fail; the contact from the level.
+ContactResult NewtonContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
+/// By the shapes' own flags: NewtonContact for two smooth convex shapes, GridContact otherwise
+/// (what the table's default cells give for kinds of those solver classes).
 ContactResult ConvexContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
 /// Which one-sided grid solves GridContact runs: one particle rescaled onto the other's surface
 /// (its samples), or both ways.

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "b2analytic/Math.h"
+#include "b2analytic/ShapeKind.h"
 
 #include <atomic>
 #include <cstdint>
@@ -31,21 +32,6 @@ public:
 private:
 	std::string m_field;
 };
-
-/// The family a shape belongs to. The contact dispatch table is indexed by it, so every
-/// family has its own row and column; user shapes share the `user` family.
-enum class ShapeFamily : int
-{
-	circle = 0,   ///< |x/r|² + |y/r|², closed forms everywhere
-	ellipse,      ///< |x/a|² + |y/b|², closed forms for radius, support, mass
-	superellipse, ///< |x/a|^n + |y/b|^m with any n, m ≥ 1
-	heart,        ///< (x² + y² − α)³ − x² y³ (paper eq. 20)
-	user,         ///< any level function supplied by the user
-	count         ///< number of families
-};
-
-/// Name of a family ("circle", "ellipse", ...).
-const char* FamilyName(ShapeFamily family);
 
 /// Value, gradient and Hessian of a level function at one body point.
 struct LevelDerivatives
@@ -129,8 +115,9 @@ public:
 	Shape(const Shape&) = delete;
 	Shape& operator=(const Shape&) = delete;
 
-	/// The family, which selects the contact solver.
-	ShapeFamily Family() const { return m_family; }
+	/// The kind, computed once from the shape's parameters: the dispatch tables' row and column
+	/// for its pairs (ShapeKind.h).
+	ShapeKind Kind() const { return m_kind; }
 	/// A readable description with all parameters, e.g. "ellipse(a=2, b=1)".
 	virtual std::string Describe() const = 0;
 
@@ -306,7 +293,9 @@ public:
 
 protected:
 	/// Set the constant properties; derived constructors call Finalize() once they are ready.
-	Shape(ShapeFamily family, double surfaceLevel, bool convex, bool smoothConvex, double levelPower);
+	/// Throws InvalidParameter (field 'kind') unless `kind` is a registered 2D kind whose solver
+	/// class the flags bear out (smoothConvex needs `smoothConvex`, convex needs `convex`).
+	Shape(ShapeKind kind, double surfaceLevel, bool convex, bool smoothConvex, double levelPower);
 	/// Compute bounding radius and mass properties (virtual functions are usable by now).
 	/// A derived class may pass closed-form values; a negative radius or a null mass means
 	/// "compute numerically".
@@ -319,7 +308,7 @@ protected:
 	virtual double LengthHint() const { return 1.0; }
 
 private:
-	ShapeFamily m_family;
+	ShapeKind m_kind;
 	double m_surfaceLevel;
 	bool m_convex;
 	bool m_smoothConvex;

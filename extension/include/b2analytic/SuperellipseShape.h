@@ -24,7 +24,9 @@ struct SuperellipseTerms
 /// linear scale). The normalised ζ-form of paper eq. 1, (|x/a|^{2ζ} + |y/b|^{2ζ})^{1/ζ}, is the
 /// same particle with level f^{1/ζ}; make it with FromZeta.
 ///
-/// Family: circle when n = m = 2 and a = b, ellipse when n = m = 2, superellipse otherwise.
+/// Kind (BuiltinKinds): circle when n = m = 2 and a = b, ellipse when n = m = 2, superellipse for
+/// other exponents n, m ≥ 2 on the raw level, smoothConvex for those in the ζ-form, convex for
+/// exponents below 2.
 /// Closed forms: radius (n = m), support (n = m, or Lagrange root for n ≠ m), area and second
 /// moments (Beta/Gamma functions), bounding radius of ellipses and circles.
 /// Smoothness: n, m ≥ 2 gives strictly convex, twice differentiable level sets (Newton

@@ -40,6 +40,12 @@ struct UserShapeDef
 	double lengthScale = 1.0;
 	/// Polar angles of corners of the surface, if any (sampling and quadrature split there).
 	std::vector<double> cornerAngles;
+	/// The registered 2D kind the shape belongs to (RegisterShapeKind), whose row and column of the
+	/// dispatch table its pairs use: functions registered for it apply to the user shapes that
+	/// name it and to no other. None (the default): the built-in kind of the declarations,
+	/// smoothConvex, convex or nonConvex. The kind's solver class must not claim more than the
+	/// declarations (InvalidParameter naming 'kind': a smoothConvex kind needs `smooth`).
+	ShapeKind kind;
 };
 
 /// A shape from a UserShapeDef. The constructor checks that G is finite and negative at the

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "b2analytic/Math.h"
+#include "b2analytic/ShapeKind.h"
 #include "b2analytic/Shape.h"
 #include "b2analytic/SuperellipseShape.h"
 #include "b2analytic/HeartShape.h"

@@ -1,4 +1,4 @@
-// b2analytic: choosing a level solver, and the names of statuses and methods.
+// b2analytic: the names of statuses and methods, the circles' closed form, the one-sided scale.
 #include "b2analytic/CommonLevel.h"
 
 #include "contact/ResultChecks.h"
@@ -55,66 +55,6 @@ LevelResult CircleLevel(const Shape& a, const Pose& pa, const Shape& b, const Po
 	const double s = dist / (ra + rb);
 	r.level = s * s;
 	r.multiplier = rb / ra; // |∇F_A| = 2s/rA, |∇F_B| = 2s/rB at the point, and ∇F_A + μ∇F_B = 0
-	return r;
-}
-
-LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
-                             const SolverOptions& options, WarmStart* warm)
-{
-	if (!PoseFinite(pa) || !PoseFinite(pb))
-	{
-		if (warm)
-			warm->valid = false;
-		return NonFinitePoseFailure<LevelResult>();
-	}
-	// The common level needs convex shapes: SolveCommonLevelGrid's refusal for both methods that
-	// would take it, before anything is solved or recorded (`warm` stays as it was).
-	if (method != MethodChoice::newton && !(a.IsConvex() && b.IsConvex()))
-		return SolveCommonLevelGrid(a, pa, b, pb, options);
-	LevelResult r;
-	LevelSlide slide; // Newton's, for the next warm start
-	LevelSlide* keep = warm ? &slide : nullptr;
-	const bool smooth = a.IsSmoothConvex() && b.IsSmoothConvex();
-	switch (method)
-	{
-	case MethodChoice::newton:
-		r = SolveCommonLevelNewton(a, pa, b, pb, options, warm, keep);
-		break;
-	case MethodChoice::grid:
-		r = SolveCommonLevelGrid(a, pa, b, pb, options);
-		break;
-	default:
-		const SuperellipseShape* ea = AsPlainEllipse(a);
-		const SuperellipseShape* eb = ea ? AsPlainEllipse(b) : nullptr;
-		if (a.Family() == ShapeFamily::circle && b.Family() == ShapeFamily::circle)
-		{
-			r = CircleLevel(a, pa, b, pb);
-		}
-		else if (ea && eb && (r = SolveEllipsePairLevel(*ea, pa, *eb, pb, warm)).Ok())
-		{
-			// two ellipses: solved without the generic solvers
-		}
-		else if (smooth)
-		{
-			r = SolveCommonLevelNewton(a, pa, b, pb, options, warm, keep);
-			if (!r.Ok() && warm && warm->valid)
-				r = SolveCommonLevelNewton(a, pa, b, pb, options, nullptr, keep);
-			if (!r.Ok())
-			{
-				const int spent = r.iterations;
-				r = SolveCommonLevelMinMax(a, pa, b, pb, options);
-				r.iterations += spent;
-				if (r.Ok())
-					r.status = SolveStatus::convergedAfterFallback;
-			}
-		}
-		else
-		{
-			r = SolveCommonLevelGrid(a, pa, b, pb, options); // convex, not smooth
-		}
-	}
-	CheckResult(r);
-	RecordWarmStart(warm, pa, pb, r, &slide); // (valid only where Newton's answer is r)
 	return r;
 }
 

@@ -89,12 +89,12 @@ inline void RecordWarmStart(WarmStart* warm, const Pose& pa, const Pose& pb, con
 /// AsSmoothSuperellipse: two of them open every contact of their pairs.)
 inline const SuperellipseShape* AsPlainEllipse(const Shape& s)
 {
-	if (s.Family() != ShapeFamily::ellipse && s.Family() != ShapeFamily::circle)
+	if (s.Kind() != BuiltinKinds::ellipse && s.Kind() != BuiltinKinds::circle)
 		return nullptr;
 	// The class is final: comparing the dynamic type is exact and costs less than a dynamic_cast
-	// (two per contact between ellipses). A superellipse is in these families exactly when
+	// (two per contact between ellipses). A superellipse is of these kinds exactly when
 	// n = m = 2, with the level f itself (ζ = 0) or f^(1/1) (ζ = 1, the only ζ with n = 2ζ = 2);
-	// another Shape subclass may claim the family, hence the type test.
+	// another Shape subclass may claim the kind, hence the type test.
 	return typeid(s) == typeid(SuperellipseShape) ? static_cast<const SuperellipseShape*>(&s) : nullptr;
 }
 /// A plain ellipse's point on the line through the world point X along `dir`, by ContactFromLevel's

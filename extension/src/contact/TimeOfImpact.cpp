@@ -2,7 +2,7 @@
 #include "b2analytic/TimeOfImpact.h"
 #include "b2analytic/SurfaceQueries.h"
 
-#include "numerics/RootFinding.h"
+#include "contact/FirstContactSearch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,17 +73,6 @@ bool CircleOverlapInterval(Vec2 d, Vec2 w, double R, double& t0, double& t1)
 	return t1 >= 0.0;
 }
 
-// No touch within [0, tMax]: the result reports the contact at the end.
-TimeOfImpactResult& Miss(TimeOfImpactResult& out, const ContactResult& end, double tMax)
-{
-	out.status = SolveStatus::converged;
-	out.iterations = std::max(out.iterations, 1);
-	out.hit = false;
-	out.time = tMax;
-	out.contact = end;
-	return out;
-}
-
 } // namespace
 
 TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb, double tMax,
@@ -107,8 +96,7 @@ TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b
 	// between the particles shrinks at most at this rate.
 	const double rate = Length(mb.velocity - ma.velocity) + std::fabs(ma.angularVelocity) * RA + std::fabs(mb.angularVelocity) * RB;
 	const bool convex = a.IsConvex() && b.IsConvex();
-	const double switchGap = 1e-3 * size;  // below this, look for a sign change to bracket
-	const double touchGap = 1e-12 * size;  // a lower bound this small is contact (grazing)
+	const double switchGap = 1e-3 * size;  // below this, the polylines bound the distance too
 
 	auto contactAt = [&](double t) { return ComputeContact(a, ma.At(t), b, mb.At(t), MethodChoice::automatic, options.solver); };
 	auto lowerBound = [&](double t, const ContactResult& c) {
@@ -130,86 +118,10 @@ TimeOfImpactResult TimeOfImpact(const Shape& a, const Motion& ma, const Shape& b
 	const double R = (RA + RB) * (1.0 + 1e-9);
 	double t0 = 0.0, t1 = tMax;
 	if (!CircleOverlapInterval(mb.pose.p - ma.pose.p, mb.velocity - ma.velocity, R, t0, t1) || t0 > tMax)
-		return Miss(out, contactAt(tMax), tMax);
+		return ReportNoContact(out, contactAt(tMax), tMax);
 	const double tEnd = std::min(tMax, t1);
 
-	double t = t0;
-	ContactResult c = contactAt(t);
-	for (int it = 0; it < options.maxIterations; ++it)
-	{
-		out.iterations = it + 1;
-		if (!c.Ok())
-		{
-			out.failure = c.failure;
-			return out;
-		}
-		if (c.touching)
-		{
-			out.status = SolveStatus::converged;
-			out.hit = true;
-			out.time = t;
-			out.contact = c;
-			return out;
-		}
-		const double lb = lowerBound(t, c);
-		if (!(rate > 0.0))
-			break; // nothing moves relative to the other
-		if (lb <= touchGap)
-		{
-			out.status = SolveStatus::converged;
-			out.hit = true;
-			out.time = t;
-			out.contact = c;
-			return out;
-		}
-		if (lb <= switchGap)
-		{
-			// Close: estimate when the separation reaches zero from its rate of change, and if a
-			// sign change is found there, finish with Brent's method on the separation.
-			// The difference step is scaled by the time reached, not by tMax: a far horizon
-			// (the fuzzer's tMax of 1e291) must not throw the probe out to absurd poses.
-			const double dt = std::max(c.separation / rate, 1e-9 * std::max(t, lb / rate));
-			const double slope = (contactAt(std::min(tMax, t + dt)).separation - c.separation) / dt;
-			if (slope < 0.0)
-			{
-				const double guess = t + c.separation / -slope;
-				const double hi = std::min(tMax, t + 1.5 * (guess - t) + lb / rate);
-				const ContactResult chi = contactAt(hi);
-				if (chi.Ok() && chi.touching)
-				{
-					// Touching contacts have separation ≤ 0 and apart ones > 0 (ContactResult).
-					auto sep = [&](double s) { return contactAt(s).separation; };
-					const ScalarResult root = FindRootBrent(sep, t, hi, c.separation, chi.separation,
-					                                        options.timeTolerance * std::max(hi, 1e-300), 200);
-					out.iterations += root.iterations;
-					out.status = SolveStatus::converged;
-					out.hit = true;
-					// The root's bracket ends on the touching side, so the contact reported touches.
-					double tr = root.x;
-					ContactResult cr = contactAt(tr);
-					if (!cr.touching)
-					{
-						tr = std::min(hi, tr + options.timeTolerance * std::max(hi, 1e-300));
-						cr = contactAt(tr);
-					}
-					out.time = tr;
-					out.contact = cr;
-					return out;
-				}
-			}
-		}
-		const double next = t + lb / rate;
-		if (next > tEnd)
-			break;
-		t = next;
-		c = contactAt(t);
-	}
-	if (out.iterations >= options.maxIterations)
-	{
-		out.failure = "conservative advancement reached its step cap";
-		return out;
-	}
-	return Miss(out, contactAt(tMax), tMax);
+	return SearchFirstContact(out, contactAt, lowerBound, t0, tEnd, tMax, rate, size, options);
 }
 
 } // namespace b2a

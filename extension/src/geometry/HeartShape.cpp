@@ -10,7 +10,7 @@
 namespace b2a
 {
 
-HeartShape::HeartShape(double alpha) : Shape(ShapeFamily::heart, alpha, false, false, 1.0), m_alpha(alpha)
+HeartShape::HeartShape(double alpha) : Shape(BuiltinKinds::nonConvex, alpha, false, false, 1.0), m_alpha(alpha)
 {
 	if (!std::isfinite(alpha) || !(alpha > 0.0))
 		throw InvalidParameter("heart", "alpha", "must be finite and > 0", alpha);

@@ -30,19 +30,6 @@ std::string FormatNumber(double value)
 	return buffer;
 }
 
-const char* FamilyName(ShapeFamily family)
-{
-	switch (family)
-	{
-	case ShapeFamily::circle: return "circle";
-	case ShapeFamily::ellipse: return "ellipse";
-	case ShapeFamily::superellipse: return "superellipse";
-	case ShapeFamily::heart: return "heart";
-	case ShapeFamily::user: return "user";
-	default: return "unknown";
-	}
-}
-
 namespace
 {
 struct DensePoint
@@ -66,10 +53,20 @@ thread_local DenseCache t_denseCache;
 std::atomic<std::uint64_t> g_nextSerial{1};
 } // namespace
 
-Shape::Shape(ShapeFamily family, double surfaceLevel, bool convex, bool smoothConvex, double levelPower)
-	: m_family(family), m_surfaceLevel(surfaceLevel), m_convex(convex), m_smoothConvex(smoothConvex), m_levelPower(levelPower),
+Shape::Shape(ShapeKind kind, double surfaceLevel, bool convex, bool smoothConvex, double levelPower)
+	: m_kind(kind), m_surfaceLevel(surfaceLevel), m_convex(convex), m_smoothConvex(smoothConvex), m_levelPower(levelPower),
 	  m_serial(g_nextSerial.fetch_add(1, std::memory_order_relaxed))
 {
+	// The kind's solver class picks the solvers of its pairs where nobody registered one: it
+	// must not promise what the shape's flags deny (Newton on a shape with corners).
+	if (KindDimension(kind) != 2)
+		throw InvalidParameter("shape", "kind", "must be a registered kind of dimension 2 (id)", kind.Id());
+	const SolverClass solverClass = KindSolverClass(kind);
+	if ((solverClass == SolverClass::smoothConvex && !smoothConvex) || (solverClass == SolverClass::convex && !convex))
+		throw InvalidParameter(std::string("shape: field 'kind' (\"") + KindName(kind) + "\", solver class " +
+		                           SolverClassName(solverClass) + ") claims more than the shape is (" +
+		                           (convex ? "convex, not smooth" : "not convex") + ")",
+		                       "kind");
 }
 
 Shape::~Shape() = default;

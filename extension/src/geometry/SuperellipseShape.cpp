@@ -14,11 +14,17 @@ namespace b2a
 
 namespace
 {
-ShapeFamily FamilyOf(double a, double b, double n, double m)
+// The kind: circle and ellipse for n = m = 2 (the ζ-form with ζ = 1 has the same level f^1);
+// superellipse for the other smooth exponents on the raw level f, whose pair solver evaluates f
+// inline; the ζ-form's level f^{1/ζ} is the generic smooth convex kind's; exponents below 2 give
+// corners or infinite curvature on the axes.
+ShapeKind KindOf(double a, double b, double n, double m, double zeta)
 {
 	if (n == 2.0 && m == 2.0)
-		return a == b ? ShapeFamily::circle : ShapeFamily::ellipse;
-	return ShapeFamily::superellipse;
+		return a == b ? BuiltinKinds::circle : BuiltinKinds::ellipse;
+	if (!(n >= 2.0 && m >= 2.0))
+		return BuiltinKinds::convex;
+	return zeta > 0.0 ? BuiltinKinds::smoothConvex : BuiltinKinds::superellipse;
 }
 
 int SmallInteger(double e)
@@ -104,7 +110,7 @@ double FarthestSurfaceDistance(double a, double b, double n, double m)
 SuperellipseShape::SuperellipseShape(double a, double b, double n, double m) : SuperellipseShape(a, b, n, m, 0.0) {}
 
 SuperellipseShape::SuperellipseShape(double a, double b, double n, double m, double zeta)
-	: Shape(FamilyOf(a, b, n, m), 1.0, true, n >= 2.0 && m >= 2.0,
+	: Shape(KindOf(a, b, n, m, zeta), 1.0, true, n >= 2.0 && m >= 2.0,
 	        // λ^(1/q) with q = min(n, m)/2 is ‖(|x/a|^{n/q}, |y/b|^{m/q})‖_q squared-like: convex
 	        // (a q-norm of convex non-negative terms) and of degree about 2. The ζ-form is already.
 	        zeta > 0.0 ? 1.0 : std::max(1.0, 0.5 * std::min(n, m))),
@@ -150,18 +156,14 @@ std::shared_ptr<SuperellipseShape> SuperellipseShape::FromZeta(double a, double 
 
 std::string SuperellipseShape::Describe() const
 {
-	switch (Family())
-	{
-	case ShapeFamily::circle:
+	if (Kind() == BuiltinKinds::circle)
 		return "circle(r=" + FormatNumber(m_a) + ")";
-	case ShapeFamily::ellipse:
+	if (Kind() == BuiltinKinds::ellipse)
 		return "ellipse(a=" + FormatNumber(m_a) + ", b=" + FormatNumber(m_b) + ")";
-	default:
-		if (IsNormalised())
-			return "superellipse(a=" + FormatNumber(m_a) + ", b=" + FormatNumber(m_b) + ", zeta=" + FormatNumber(m_zeta) + ")";
-		return "superellipse(a=" + FormatNumber(m_a) + ", b=" + FormatNumber(m_b) + ", n=" + FormatNumber(m_n) +
-		       ", m=" + FormatNumber(m_m) + ")";
-	}
+	if (IsNormalised())
+		return "superellipse(a=" + FormatNumber(m_a) + ", b=" + FormatNumber(m_b) + ", zeta=" + FormatNumber(m_zeta) + ")";
+	return "superellipse(a=" + FormatNumber(m_a) + ", b=" + FormatNumber(m_b) + ", n=" + FormatNumber(m_n) + ", m=" +
+	       FormatNumber(m_m) + ")";
 }
 
 double SuperellipseShape::Level(Vec2 x) const

@@ -15,10 +15,32 @@ std::string Who(const UserShapeDef& def)
 {
 	return "user shape '" + def.name + "'";
 }
+
+// The kind the definition names, or the built-in one its declarations say. (Checked here, before
+// the base class's check, so that the message names the shape.)
+ShapeKind KindOf(const UserShapeDef& def)
+{
+	if (def.kind.Valid())
+	{
+		if (KindDimension(def.kind) != 2)
+			throw InvalidParameter(Who(def), "kind", "must be a registered kind of dimension 2 (id)", def.kind.Id());
+		const SolverClass solverClass = KindSolverClass(def.kind);
+		if ((solverClass == SolverClass::smoothConvex && !def.smooth) ||
+		    (solverClass == SolverClass::convex && !(def.convex || def.smooth)))
+			throw InvalidParameter(Who(def) + ": field 'kind' (\"" + KindName(def.kind) + "\", solver class " +
+			                           SolverClassName(solverClass) + ") needs the shape declared " +
+			                           (solverClass == SolverClass::convex ? "'convex'" : "'smooth'"),
+			                       "kind");
+		return def.kind;
+	}
+	if (def.smooth)
+		return BuiltinKinds::smoothConvex;
+	return def.convex ? BuiltinKinds::convex : BuiltinKinds::nonConvex;
+}
 } // namespace
 
 UserShape::UserShape(UserShapeDef def)
-	: Shape(ShapeFamily::user, def.level, def.convex || def.smooth, def.smooth, def.levelPower), m_def(std::move(def))
+	: Shape(KindOf(def), def.level, def.convex || def.smooth, def.smooth, def.levelPower), m_def(std::move(def))
 {
 	const std::string who = Who(m_def);
 	if (!m_def.function)

@@ -1,0 +1,35 @@
+// b2analytic: pieces shared between the 3D solver sources (internal).
+#pragma once
+
+#include "b2analytic/3d/Contact3.h"
+#include "3d/PairFrame3.h"
+
+namespace b2a
+{
+
+/// Newton on the common level from (ξ, ν = log μ) in a frame (Newton3.cpp); `level` is λA there.
+LevelResult3 RunNewton3(const PairFrame3& frame, Vec3 xi, double nu, const SolverOptions& options);
+
+/// The point between the centres where ψA = ψB, and μ balancing the gradients there; false
+/// when the centres coincide.
+bool GeometricStart3(const PairFrame3& frame, Vec3& xi, double& mu);
+
+/// True when both shapes suit Newton (smooth, strictly convex); else fills `failure`.
+bool NewtonApplies3(const Shape3& a, const Shape3& b, LevelResult3& failure);
+
+/// Common level of two spheres in closed form; fails where the centres coincide.
+LevelResult3 SphereLevel(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb);
+
+/// Common level of two ellipsoids (spheres included) by Perram and Wertheim's one-dimensional
+/// form (EllipsoidPairLevel.cpp). Fails for other shapes and where the centres coincide.
+LevelResult3 SolveEllipsoidPairLevel(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb);
+
+/// Coincident centres: the contact along the axis of least overlap (the separating-axis depth,
+/// the lowest of 256 directions refined by Nelder–Mead), Contact3.cpp.
+ContactResult3 OverlapAxisContact3(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb);
+
+/// Records a solved level as the next warm start (the point in both bodies' frames and μ); a
+/// failed solve, or one without a positive multiplier, invalidates it.
+void RecordWarmStart3(WarmStart3* warm, const Pose3& pa, const Pose3& pb, const LevelResult3& level);
+
+} // namespace b2a

@@ -1,0 +1,266 @@
+// b2analytic: the contact built from a level solution, and the contact of coincident centres.
+#include "contact/ContactParts.h"
+
+#include "b2analytic/SurfaceQueries.h"
+
+#include "contact/ResultChecks.h"
+#include "contact/SurfaceCrossing.h"
+#include "numerics/RootFinding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace b2a
+{
+
+namespace
+{
+// The surface point of a shape on the ray from its centre towards X (always exists).
+Vec2 RadialPoint(const Shape& shape, const Pose& pose, Vec2 X)
+{
+	const Vec2 x = ToBody(pose, X);
+	const double theta = LengthSquared(x) > 0.0 ? std::atan2(x.y, x.x) : 0.0;
+	return ToWorld(pose, shape.SurfacePoint(theta));
+}
+} // namespace
+
+ContactResult OverlapAxisContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb)
+{
+	auto depth = [&](double t) {
+		const Vec2 n(std::cos(t), std::sin(t));
+		return Dot(WorldSupport(a, pa, n) - WorldSupport(b, pb, -n), n);
+	};
+	const int count = 64;
+	const double step = 2.0 * kPi / count;
+	double value[count];
+	int lowest = 0;
+	for (int k = 0; k < count; ++k)
+	{
+		value[k] = depth(step * k);
+		if (value[k] < value[lowest]) lowest = k;
+	}
+	// The depth has a local minimum at each particle's narrow axes, sharp ones for blocky
+	// superellipses, so the lowest sample can lie by the wrong one (a large square and a small
+	// needle: the square's other axis, across the needle, is the least overlap). Refine the four
+	// lowest local minima of the samples and keep the least depth.
+	std::vector<int> minima;
+	for (int k = 0; k < count; ++k)
+		if (value[k] <= value[(k + count - 1) % count] && value[k] < value[(k + 1) % count])
+			minima.push_back(k);
+	if (minima.empty())
+		minima.push_back(lowest); // constant depth (two circles)
+	std::sort(minima.begin(), minima.end(), [&](int i, int j) { return value[i] < value[j]; });
+	if (minima.size() > 4)
+		minima.resize(4);
+	double t = step * minima[0], bestDepth = value[minima[0]];
+	for (int k : minima)
+	{
+		const ScalarResult m = MinimizeBrent(depth, step * (k - 1), step * (k + 1), 1e-12, 1e-14, 200);
+		if (m.fx < bestDepth) { bestDepth = m.fx; t = m.x; }
+	}
+	ContactResult c;
+	c.status = SolveStatus::converged;
+	c.method = SolveMethod::overlapAxis;
+	c.normal = Vec2(std::cos(t), std::sin(t));
+	c.pointA = WorldSupport(a, pa, c.normal);
+	c.pointB = WorldSupport(b, pb, -c.normal);
+	c.point = 0.5 * (pa.p + pb.p);
+	c.separation = Dot(c.pointB - c.pointA, c.normal);
+	c.touching = c.separation <= 0.0;
+	c.level = 0.0;
+	return c;
+}
+
+ContactResult FailedContact(const LevelResult& level)
+{
+	ContactResult c;
+	c.status = SolveStatus::failed;
+	c.method = level.method;
+	c.failure = level.failure;
+	c.iterations = level.iterations;
+	return c;
+}
+
+int CornerAt(const Shape& s, Vec2 x)
+{
+	// On the ray's side of the centre, |u × x| ≤ sin(1e-7)·|x| (NearCorner's test, without the
+	// atan2).
+	if (s.CornerAngles().empty() || !(LengthSquared(x) > 0.0))
+		return -1;
+	const double off = 1e-7 * Length(x); // sin(1e-7) = 1e-7 to 2e-22
+	const std::vector<Vec2>& rays = s.CornerDirections();
+	for (size_t i = 0; i < rays.size(); ++i)
+		if (Dot(rays[i], x) > 0.0 && std::fabs(Cross(rays[i], x)) < off)
+			return int(i);
+	return -1;
+}
+
+namespace
+{
+// True when the body point lies on one of the shape's corners.
+bool AtCorner(const Shape& s, Vec2 x) { return CornerAt(s, x) >= 0; }
+
+// A convex shape's extreme point along `dir` on the line X + t·dir (the largest root of
+// g(t) = λ(X + t·dir) − own), by Newton from t = 0, where g(0) = g0. g is convex along the line
+// (λ is convex for a convex shape of the superellipse family; user shapes declared convex are
+// taken at their word, and the result is checked). Where g'(0) > 0, Newton converges to the
+// largest root monotonically: every tangent lies below g, so from g(0) > 0 each iterate stays
+// between the root and the previous one, and from g(0) < 0 the first iterate overshoots past
+// the root, after which the same holds. A few iterations replace the ~40 level evaluations of a
+// bracketing search; where the conditions fail (g'(0) ≤ 0, the line misses the shape, no
+// convergence in 30 steps) it returns false and the bracketing search decides.
+bool ConvexLineExtreme(const Shape& s, const Pose& ps, Vec2 X, Vec2 dir, double g0, double reach, double& t)
+{
+	const Vec2 localDir = InvRotate(ps.q, dir);
+	const double own = s.SurfaceLevel();
+	// Level and slope from one evaluation per iterate; stop where the step or the level is at
+	// rounding (a level within 4 eps of the own level is on the surface to rounding).
+	const double tol = 1e-15 * reach, levelTol = 4.0 * std::numeric_limits<double>::epsilon() * std::fabs(own);
+	t = 0.0;
+	LevelDerivatives d = s.Derivatives(ToBody(ps, X));
+	double g = g0;
+	for (int it = 0; it < 30; ++it)
+	{
+		const double slope = Dot(d.gradient, localDir);
+		if (!(slope > 0.0) || !std::isfinite(g))
+			return false;
+		const double step = g / slope;
+		const double next = t - step;
+		if (!(std::fabs(next) <= reach))
+			return false;
+		// After the first step the iterates decrease monotonically onto the root: an increase
+		// means g is not convex along the line here; let the bracketing search decide.
+		if (it > 0 && step < -tol)
+			return false;
+		t = next;
+		if (std::fabs(step) <= tol)
+			return true;
+		d = s.Derivatives(ToBody(ps, X + t * dir));
+		g = d.value - own;
+		if (std::fabs(g) <= levelTol)
+			return true;
+	}
+	return false;
+}
+
+// The contact normal at X, from A to B: the mean of A's outward and B's inward unit normals,
+// which agree at a tangency. A shape whose corner X is gives no normal; the other's is used.
+// When the two normals point the same way, one particle's centre lies inside the other and X is
+// B's surface point nearest A (pointOnB, the grid method): A leaves B fastest through that
+// point, so the normal is B's inward one there.
+// (`cornerA`, `cornerB`: whether X is a corner of A, of B; the caller has them.)
+Vec2 ContactNormal(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Vec2 X, bool pointOnB,
+                   const Vec2* gradientA, bool cornerA, bool cornerB)
+{
+	const Vec2 xa = ToBody(pa, X), xb = ToBody(pb, X);
+	const Vec2 na = cornerA ? Vec2() : Normalize(Rotate(pa.q, gradientA ? *gradientA : a.Gradient(xa)));
+	const Vec2 nb = cornerB ? Vec2() : Normalize(Rotate(pb.q, b.Gradient(xb)));
+	const bool hasA = LengthSquared(na) > 0.0, hasB = LengthSquared(nb) > 0.0;
+	Vec2 n;
+	if (hasA && hasB)
+		n = Dot(na, nb) < 0.0 ? Normalize(na - nb) : (pointOnB ? -nb : na);
+	else if (hasA)
+		n = na;
+	else if (hasB)
+		n = -nb;
+	if (!(LengthSquared(n) > 0.0))
+		n = Normalize(pb.p - pa.p);
+	if (!(LengthSquared(n) > 0.0))
+		n = Vec2(1.0, 0.0);
+	return n;
+}
+} // namespace
+
+ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const LevelResult& level,
+                                    bool touching, bool pointOnB, const Vec2* gradientA)
+{
+	ContactResult c;
+	TakeOverLevel(c, level);
+	const Vec2 X = level.point;
+	// The ellipse-pair solver's normal is ∇λA or −∇λB at its point, whichever its rounding
+	// disturbs less (at the root they are opposed: the point minimises (1 − s)λA + sλB), from
+	// residuals computed in each body frame: re-deriving it from the double point's gradient
+	// would lose up to 1e-7 rad on 1000:1 needles.
+	// Whether X is a corner of either shape, for the normal and for each point's search (found
+	// once each: four times, as it was, was 1 % of a heart contact's instructions).
+	const bool cornerA = AtCorner(a, ToBody(pa, X)), cornerB = AtCorner(b, ToBody(pb, X));
+	c.normal = level.method == SolveMethod::ellipsePair ? level.normal
+	                                                    : ContactNormal(a, pa, b, pb, X, pointOnB, gradientA, cornerA, cornerB);
+	const Vec2 n = c.normal;
+
+	// The points: for a convex shape, where the line through X along n leaves A last (A's
+	// extreme along +n on it) and enters B first (B's extreme along −n): from X itself when the
+	// shape contains X, else entering the line from beyond the shape. For a non-convex shape the
+	// line may cross it more than once (a heart's lobes around a particle in its notch): there
+	// the crossing nearest X counts, leaving the shape along the direction when X is inside it,
+	// entering it behind X when X is outside.
+	auto extreme = [&](const Shape& s, const Pose& ps, Vec2 dir, const Vec2* bodyGradient, const double* known,
+	                   bool atCorner) -> Vec2 {
+		// A point on the surface to 1e-10 of the level (the grid's points are) is its own
+		// crossing; at a corner, where the level grows like |x|^{2/3} (a heart's tip), rounding
+		// of the point's coordinates moves the level by up to 1e-6.
+		const double own = s.SurfaceLevel();
+		const Vec2 x = ToBody(ps, X);
+		const double level = known ? *known : s.Level(x);
+		const double onSurface = atCorner ? 1e-6 : 1e-10;
+		if (std::fabs(level - own) <= onSurface * std::max(std::fabs(own), 1.0))
+			return X;
+		const bool inside = level <= own;
+		double far = 0.0;
+		const Vec2 bodyDir = InvRotate(ps.q, dir);
+		if (s.IsConvex() && s.FarCrossing(x, bodyDir, far))
+			return X + far * dir; // the common case: no search, no reach
+		if (!inside && s.IsConvex() && s.LineMisses(x, bodyDir))
+			return RadialPoint(s, ps, X); // what the searches below end with, without them
+		const double reach = Distance(X, ps.p) + 1.01 * s.BoundingRadius();
+		if (s.IsConvex() && ConvexLineExtreme(s, ps, X, dir, level - own, reach, far))
+			return X + far * dir;
+		if (inside || !s.IsConvex())
+		{
+			const Vec2 way = inside ? dir : -dir;
+			// (The level at X is known, and with the gradient there (the caller's, where it has
+			// it) a non-convex shape's march heads for the estimated crossing instead of doubling
+			// its way there; a convex shape's crossing takes no slope.)
+			double slope = std::numeric_limits<double>::quiet_NaN();
+			if (!s.IsConvex())
+				slope = Dot(bodyGradient ? *bodyGradient : s.Gradient(x), InvRotate(ps.q, way));
+			const double t = FirstSurfaceCrossingFrom(s, ps, X, way, reach, level - own, slope);
+			if (t >= 0.0)
+				return X + t * way;
+		}
+		else
+		{
+			const double beyond = Dot(ps.p - X, dir) + 1.01 * s.BoundingRadius();
+			const Vec2 start = X + std::max(beyond, 0.0) * dir;
+			const double t = FirstSurfaceCrossing(s, ps, start, -dir, 2.02 * s.BoundingRadius() + Distance(start, ps.p));
+			if (t >= 0.0)
+				return start - t * dir;
+		}
+		return RadialPoint(s, ps, X); // the line misses a far-away particle
+	};
+	// (With the point on B's surface, the level solved for is A's own there: not evaluated again.)
+	c.pointA = extreme(a, pa, n, gradientA, pointOnB ? &level.level : nullptr, cornerA);
+	c.pointB = extreme(b, pb, -n, nullptr, nullptr, cornerB);
+	SetSeparation(c, touching);
+	return c;
+}
+
+
+ContactResult ContactFromLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const LevelResult& level,
+                               bool touching, bool pointOnB)
+{
+	return ContactFromLevelGiven(a, pa, b, pb, level, touching, pointOnB, nullptr);
+}
+
+ContactResult FlipContact(const ContactResult& c)
+{
+	ContactResult f = c;
+	f.normal = -c.normal;
+	f.pointA = c.pointB;
+	f.pointB = c.pointA;
+	return f;
+}
+
+} // namespace b2a

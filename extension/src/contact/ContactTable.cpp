@@ -1,0 +1,307 @@
+// b2analytic: the one table that decides which solver handles a pair of 2D shape kinds.
+//
+//                  circle    ellipse   superellipse  smooth_convex  convex   non_convex
+//  circle          Circle    Ellipse   Superellipse  Newton         Grid     Grid
+//  ellipse                   Ellipse   Superellipse  Newton         Grid     Grid
+//  superellipse                        Superellipse  Newton         Grid     Grid
+//  smooth_convex                                     Newton         Grid     Grid
+//  convex                                                           Grid     Grid
+//  non_convex                                                                Grid
+//  (symmetric; a kind registered later: Newton between two of solver class smoothConvex, Grid
+//  for any other pair, until a function is registered for the pair)
+//
+// Each cell is a chain, written once here: its solver, and where the pair goes when that gives up.
+//  contact        solver                                    → where it gives up      level (SolveCommonLevel)
+//  Circle         closed form (coincident → OverlapAxis)                             CircleLevel
+//  Ellipse        ellipse pair, points in closed form       → from EllipseLevel      EllipseLevel
+//  Superellipse   inline Newton, raw-level finish            → from NewtonLevel       NewtonLevel
+//  Newton         from NewtonLevel                                                   NewtonLevel
+//  Grid           one side (ChooseGridSide)                  → both ways              GridLevel
+//  "from L": coincident centres → OverlapAxis; else ContactFromLevel of the level chain L.
+//  level chains: CircleLevel   closed form
+//                EllipseLevel  ellipse pair (Perram–Wertheim)  → NewtonLevel
+//                NewtonLevel   Newton from the warm start      → Newton cold → min–max
+//                GridLevel     the grid's fixed point (non-convex pairs are refused before the table)
+//  Explicit methods, for any pair: MethodChoice::newton: from Newton alone (level: Newton alone);
+//  MethodChoice::grid: Grid (level: GridLevel).
+#include "contact/ContactParts.h"
+
+#include "contact/PairFrame.h"
+#include "contact/PairTable.h"
+#include "contact/ResultChecks.h"
+#include "contact/SolverCore.h"
+
+namespace b2a
+{
+
+namespace
+{
+// The level chains that are one solver (the others are ContactParts.h's).
+LevelResult CircleLevelCell(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                            const WarmStart* warm, LevelSlide* slide);
+LevelResult GridLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                      const WarmStart* warm, LevelSlide* slide);
+LevelResult NewtonAlone(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                        const WarmStart* warm, LevelSlide* slide);
+
+using Table2 = PairTable<ContactFunction, LevelFunction>;
+
+// The default cell of two solver classes.
+constexpr Table2::Cell CellOfClasses(SolverClass a, SolverClass b)
+{
+	const bool newton = a == SolverClass::smoothConvex && b == SolverClass::smoothConvex;
+	return newton ? Table2::Cell{&NewtonContact, &NewtonLevelChain} : Table2::Cell{&GridContact, &GridLevel};
+}
+
+// The table above: every built-in cell set (the defaults by class too, so that the built-in
+// kinds' pairs never look up a class), then the specialised ones.
+struct BuiltTable : Table2
+{
+	constexpr BuiltTable() : Table2(2, &CellOfClasses)
+	{
+		for (int i = 0; i < BuiltinKinds::count; ++i)
+			for (int j = 0; j < BuiltinKinds::count; ++j)
+				SetCell(BuiltinKinds::all[i], BuiltinKinds::all[j],
+				        CellOfClasses(BuiltinKinds::solverClasses[i], BuiltinKinds::solverClasses[j]));
+		const ShapeKind circle = BuiltinKinds::circle, ellipse = BuiltinKinds::ellipse, superellipse = BuiltinKinds::superellipse;
+		SetCell(circle, circle, {&CircleContact, &CircleLevelCell});
+		SetCell(ellipse, circle, {&EllipseContact, &EllipseLevelChain});
+		SetCell(ellipse, ellipse, {&EllipseContact, &EllipseLevelChain});
+		SetCell(superellipse, circle, {&SuperellipseContact, &NewtonLevelChain});
+		SetCell(superellipse, ellipse, {&SuperellipseContact, &NewtonLevelChain});
+		SetCell(superellipse, superellipse, {&SuperellipseContact, &NewtonLevelChain});
+	}
+};
+
+// Constant-initialized: filled at compile time, before any code runs (so a registration from
+// another file's static initialiser finds it filled), and read without a guard.
+B2A_CONSTINIT BuiltTable g_table;
+
+Table2& Table() { return g_table; }
+
+LevelResult CircleLevelCell(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions&,
+                            const WarmStart*, LevelSlide*)
+{
+	return CircleLevel(a, pa, b, pb);
+}
+LevelResult GridLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                      const WarmStart*, LevelSlide*)
+{
+	return SolveCommonLevelGrid(a, pa, b, pb, options);
+}
+LevelResult NewtonAlone(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                        const WarmStart* warm, LevelSlide* slide)
+{
+	return SolveCommonLevelNewton(a, pa, b, pb, options, warm, slide);
+}
+} // namespace
+
+LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                             const WarmStart* warm, LevelSlide* slide)
+{
+	LevelResult r = SolveCommonLevelNewton(a, pa, b, pb, options, warm, slide);
+	if (!r.Ok() && warm && warm->valid)
+		r = SolveCommonLevelNewton(a, pa, b, pb, options, nullptr, slide);
+	if (!r.Ok())
+	{
+		const int spent = r.iterations;
+		r = SolveCommonLevelMinMax(a, pa, b, pb, options);
+		r.iterations += spent;
+		if (r.Ok())
+			r.status = SolveStatus::convergedAfterFallback;
+	}
+	return r;
+}
+
+LevelResult EllipseLevelChain(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                              const WarmStart* warm, LevelSlide* slide)
+{
+	const SuperellipseShape* ea = AsPlainEllipse(a);
+	const SuperellipseShape* eb = ea ? AsPlainEllipse(b) : nullptr;
+	if (eb)
+	{
+		LevelResult r = SolveEllipsePairLevel(*ea, pa, *eb, pb, warm);
+		if (r.Ok())
+			return r;
+	}
+	return NewtonLevelChain(a, pa, b, pb, options, warm, slide);
+}
+
+namespace
+{
+// A level chain's answer as SolveCommonLevel gives it: a pose that is not finite refused, the
+// answer checked, and recorded as the next warm start (with the slide where the chain computed
+// one). A function stored flipped solves (B, A), without the warm start, and its answer is
+// turned back: the same point and level, the normal reversed, the multiplier inverted.
+LevelResult RunLevel(LevelFunction f, bool flipped, const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                     const SolverOptions& options, WarmStart* warm)
+{
+	if (!PoseFinite(pa) || !PoseFinite(pb))
+	{
+		if (warm)
+			warm->valid = false;
+		return NonFinitePoseFailure<LevelResult>();
+	}
+	LevelSlide slide; // the chain's, for the next warm start
+	LevelResult r;
+	if (flipped)
+	{
+		r = f(b, pb, a, pa, options, nullptr, nullptr);
+		r.normal = -r.normal;
+		r.multiplier = r.multiplier > 0.0 ? 1.0 / r.multiplier : 0.0;
+	}
+	else
+		r = f(a, pa, b, pb, options, warm, warm ? &slide : nullptr);
+	CheckResult(r);
+	RecordWarmStart(warm, pa, pb, r, &slide); // (valid only where the chain computed it)
+	return r;
+}
+} // namespace
+
+ContactResult ContactFromLevelChain(LevelFunction level, const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
+                                    const SolverOptions& options, WarmStart* warm)
+{
+	if (CentresCoincide(a, pa, b, pb))
+		return OverlapAxisContact(a, pa, b, pb);
+	const LevelResult r = RunLevel(level, false, a, pa, b, pb, options, warm);
+	if (!r.Ok())
+		return FailedContact(r);
+	return ContactFromLevel(a, pa, b, pb, r, r.level <= 1.0);
+}
+
+ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                             WarmStart* warm)
+{
+	// (One named result, built in the caller's: with other objects returned beside it, it was
+	// copied out on every contact.)
+	ContactResult c = EllipsePairContact(a, pa, b, pb, warm);
+	if (Declined(c))
+		c = ContactFromLevelChain(&EllipseLevelChain, a, pa, b, pb, options, warm);
+	return c;
+}
+
+ContactResult SuperellipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                                  WarmStart* warm)
+{
+	ContactResult c = SuperellipsePairContact(a, pa, b, pb, options, warm);
+	if (Declined(c))
+		c = ContactFromLevelChain(&NewtonLevelChain, a, pa, b, pb, options, warm);
+	return c;
+}
+
+ContactResult NewtonContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                            WarmStart* warm)
+{
+	return ContactFromLevelChain(&NewtonLevelChain, a, pa, b, pb, options, warm);
+}
+
+ContactResult ConvexContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                            WarmStart* warm)
+{
+	if (a.IsSmoothConvex() && b.IsSmoothConvex())
+		return NewtonContact(a, pa, b, pb, options, warm);
+	return GridContact(a, pa, b, pb, options, warm);
+}
+
+namespace
+{
+// The public functions' checks: registered 2D kinds, and a function where one is set.
+void RequirePair(const char* who, ShapeKind a, ShapeKind b)
+{
+	Table().RequireKind(a, who, "a");
+	Table().RequireKind(b, who, "b");
+}
+void RequireFunction(const char* who, bool given)
+{
+	if (!given)
+		throw InvalidParameter(std::string(who) + ": field 'function' is null", "function");
+}
+} // namespace
+
+void RegisterContactFunction(ShapeKind a, ShapeKind b, ContactFunction function)
+{
+	RequirePair("RegisterContactFunction", a, b);
+	RequireFunction("RegisterContactFunction", function != nullptr);
+	Table().SetContact(a, b, function);
+}
+
+void RegisterLevelFunction(ShapeKind a, ShapeKind b, LevelFunction function)
+{
+	RequirePair("RegisterLevelFunction", a, b);
+	RequireFunction("RegisterLevelFunction", function != nullptr);
+	Table().SetLevel(a, b, function);
+}
+
+ContactFunction GetContactFunction(ShapeKind a, ShapeKind b)
+{
+	RequirePair("GetContactFunction", a, b);
+	bool flipped = false;
+	return Table().Contact(a, b, flipped);
+}
+
+LevelFunction GetLevelFunction(ShapeKind a, ShapeKind b)
+{
+	RequirePair("GetLevelFunction", a, b);
+	bool flipped = false;
+	return Table().Level(a, b, flipped);
+}
+
+namespace
+{
+ContactResult Dispatch(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
+                       const SolverOptions& options, WarmStart* warm)
+{
+	if (method == MethodChoice::grid)
+		return GridContact(a, pa, b, pb, options, warm);
+	if (method == MethodChoice::newton)
+		return ContactFromLevelChain(&NewtonAlone, a, pa, b, pb, options, warm);
+	bool flipped = false;
+	const ContactFunction f = Table().Contact(a.Kind(), b.Kind(), flipped);
+	// A function registered for (B, A): solved that way round and flipped. A warm start is
+	// stored in the first shape's frame, so it is not shared across the flip.
+	if (flipped)
+		return FlipContact(f(b, pb, a, pa, options, nullptr));
+	return f(a, pa, b, pb, options, warm);
+}
+
+// Dispatch's answer checked where it lies, the caller's result (one named return).
+ContactResult CheckedDispatch(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
+                              const SolverOptions& options, WarmStart* warm)
+{
+	ContactResult c = Dispatch(a, pa, b, pb, method, options, warm);
+	CheckResult(c);
+	return c;
+}
+} // namespace
+
+ContactResult ComputeContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
+                             const SolverOptions& options, WarmStart* warm)
+{
+	if (!PoseFinite(pa) || !PoseFinite(pb))
+		return NonFinitePoseFailure<ContactResult>();
+	return CheckedDispatch(a, pa, b, pb, method, options, warm);
+}
+
+LevelResult SolveCommonLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, MethodChoice method,
+                             const SolverOptions& options, WarmStart* warm)
+{
+	if (!PoseFinite(pa) || !PoseFinite(pb))
+	{
+		if (warm)
+			warm->valid = false;
+		return NonFinitePoseFailure<LevelResult>();
+	}
+	// The common level needs convex shapes: SolveCommonLevelGrid's refusal for both methods that
+	// would take it, before anything is solved or recorded (`warm` stays as it was).
+	if (method != MethodChoice::newton && !(a.IsConvex() && b.IsConvex()))
+		return SolveCommonLevelGrid(a, pa, b, pb, options);
+	if (method == MethodChoice::newton)
+		return RunLevel(&NewtonAlone, false, a, pa, b, pb, options, warm);
+	if (method == MethodChoice::grid)
+		return RunLevel(&GridLevel, false, a, pa, b, pb, options, warm);
+	bool flipped = false;
+	const LevelFunction f = Table().Level(a.Kind(), b.Kind(), flipped);
+	return RunLevel(f, flipped, a, pa, b, pb, options, warm);
+}
+
+} // namespace b2a
