@@ -12,6 +12,7 @@
 #include "TestSupport.h"
 #include "ContactChecks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -237,4 +238,76 @@ TEST_CASE("contact table: misuse of the registration functions is refused, namin
 	}
 	// Nothing changed by the refusals.
 	CHECK(Same(GetContactFunction(circle, circle), &CircleContact));
+}
+
+namespace
+{
+// A disc against a polygon's nearest edge, in closed form (the disc's centre outside the
+// polygon): the distance from the centre to the nearest edge, minus the radius. Counts its calls.
+int g_polygonCalls = 0;
+ContactResult DiscPolygonContact(const Shape& a, const Pose& pa, const Vec2* vertices, int count, const Pose& pb, const Vec2*)
+{
+	++g_polygonCalls;
+	double best = 1e300;
+	Vec2 nearest;
+	for (int j = 0; j < count; ++j)
+	{
+		const Vec2 p = ToWorld(pb, vertices[j]), q = ToWorld(pb, vertices[(j + 1) % count]);
+		const double t = std::clamp(Dot(pa.p - p, q - p) / LengthSquared(q - p), 0.0, 1.0);
+		const Vec2 x = p + t * (q - p);
+		if (Distance(pa.p, x) < best)
+		{
+			best = Distance(pa.p, x);
+			nearest = x;
+		}
+	}
+	ContactResult c;
+	c.status = SolveStatus::converged;
+	c.method = SolveMethod::closedForm;
+	c.normal = (nearest - pa.p) / best;
+	c.pointA = pa.p + a.BoundingRadius() * c.normal;
+	c.pointB = nearest;
+	c.point = 0.5 * (c.pointA + c.pointB);
+	c.separation = best - a.BoundingRadius();
+	c.touching = c.separation <= 0.0;
+	return c;
+}
+} // namespace
+
+TEST_CASE("contact table: the polygon column is the separating axis until a kind registers its own")
+{
+	for (const ShapeKind k : BuiltinKinds::all)
+		CHECK(bool(GetPolygonContactFunction(k) == &SeparatingAxisContact));
+	const ShapeKind discKind = KindOnce("test_table_polygon_disc", SolverClass::smoothConvex);
+	CHECK(bool(GetPolygonContactFunction(discKind) == &SeparatingAxisContact));
+	RegisterPolygonContactFunction(discKind, &DiscPolygonContact);
+	CHECK(bool(GetPolygonContactFunction(discKind) == &DiscPolygonContact));
+
+	const double r = 0.4;
+	const ShapePtr disc = MakeDisc(r, discKind), otherDisc = MakeDisc(r, ShapeKind());
+	const Vec2 box[4] = {Vec2(-1.0, -0.5), Vec2(1.0, -0.5), Vec2(1.0, 0.5), Vec2(-1.0, 0.5)};
+	const Pose pb(Vec2(0.3, -0.2), 0.25);
+	Random rng(41);
+	for (int k = 0; k < 16; ++k)
+	{
+		// A centre outside the box, at a distance from its boundary of 0.5 r to 2 r.
+		const double dir = rng.Angle();
+		Pose pa(ToWorld(pb, Vec2(0.0, 0.0)), rng.Angle());
+		const Vec2 u(std::cos(dir), std::sin(dir));
+		const double reach = std::min(1.0 / std::max(std::fabs(u.x), 1e-300), 0.5 / std::max(std::fabs(u.y), 1e-300));
+		const double gap = rng.Uniform(0.5, 2.0) * r;
+		pa.p = ToWorld(pb, (reach + gap / std::max(std::fabs(u.x), std::fabs(u.y))) * u);
+		INFO("case " << k);
+		const int calls = g_polygonCalls;
+		const ContactResult exact = ComputePolygonContact(*disc, pa, box, 4, pb);
+		CHECK(g_polygonCalls == calls + 1);
+		CHECK(exact.method == SolveMethod::closedForm);
+		// The other disc's kind keeps the separating axis, which agrees to its tolerance.
+		const ContactResult axis = ComputePolygonContact(*otherDisc, pa, box, 4, pb);
+		CHECK(g_polygonCalls == calls + 1);
+		CHECK(axis.method == SolveMethod::separatingAxis);
+		CHECK(std::fabs(axis.separation - exact.separation) <= 1e-10);
+	}
+	CHECK(RefusedField([] { RegisterPolygonContactFunction(ShapeKind(), &DiscPolygonContact); }) == "kind");
+	CHECK(RefusedField([&] { RegisterPolygonContactFunction(discKind, nullptr); }) == "function");
 }

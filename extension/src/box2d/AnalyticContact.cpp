@@ -298,8 +298,9 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	}
 	else if (pa.shape && m_kind == Kind::polygonCircle)
 	{
-		// Analytic against a Box2D circle: the circle as an analytic circle at its centre. Box2D
-		// subtracts the circle's radius itself, so B's manifold point is the centre.
+		// Analytic against a Box2D circle: the circle as an analytic circle at its centre, whose
+		// pair the dispatch table decides as any other. Box2D subtracts the circle's radius
+		// itself, so B's manifold point is the centre.
 		if (!m_circle)
 			return;
 		const b2CircleShape* circle = static_cast<const b2CircleShape*>(m_fixtureB->GetShape());
@@ -315,8 +316,9 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	}
 	else
 	{
-		// One analytic side against a Box2D polygon, edge or chain link: the separating axis
-		// against its core geometry; Box2D adds the skin radius.
+		// One analytic side against a Box2D polygon, edge or chain link: its core geometry's
+		// vertices to the dispatch table's polygon column (ComputePolygonContact); Box2D adds the
+		// skin radius.
 		const bool analyticIsA = pa.shape != nullptr;
 		const Side& proxy = analyticIsA ? pa : pb;
 		const b2Shape* sa = m_fixtureA->GetShape();
