@@ -83,20 +83,6 @@ ContactResult FailedContact(const LevelResult& level)
 	return c;
 }
 
-int CornerAt(const Shape& s, Vec2 x)
-{
-	// On the ray's side of the centre, |u × x| ≤ sin(1e-7)·|x| (NearCorner's test, without the
-	// atan2).
-	if (s.CornerAngles().empty() || !(LengthSquared(x) > 0.0))
-		return -1;
-	const double off = 1e-7 * Length(x); // sin(1e-7) = 1e-7 to 2e-22
-	const std::vector<Vec2>& rays = s.CornerDirections();
-	for (size_t i = 0; i < rays.size(); ++i)
-		if (Dot(rays[i], x) > 0.0 && std::fabs(Cross(rays[i], x)) < off)
-			return int(i);
-	return -1;
-}
-
 namespace
 {
 // True when the body point lies on one of the shape's corners.

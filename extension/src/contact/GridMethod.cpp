@@ -4,6 +4,7 @@
 #include "contact/GridScale.h"
 #include "contact/LevelAlongLine.h"
 #include "contact/PairFrame.h"
+#include "contact/SampleRuns.h"
 #include "numerics/RootFinding.h"
 #include "numerics/SmallLinear.h"
 
@@ -25,6 +26,8 @@ struct SurfaceWalk
 	const Shape& b;
 	Pose bInA; // B body → A body
 	double levelB;
+	const LevelBounds* boundsA; // a.Bounds(), b.Bounds() (or null)
+	const LevelBounds* boundsB;
 	mutable int evaluations = 0;
 
 	// λA at B's surface point X_B(θ).
@@ -131,7 +134,8 @@ bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, doubl
 		// the tolerance, 4 more. (One Newton step in five a heart–heart contact, 2 % of it.)
 		const bool settled = last > 0.0 && stepLength < 0.25 * last &&
 		                     1e3 * (stepLength / (last * last)) * (stepLength * stepLength) <= tolerance &&
-		                     walk.a.LevelSmoothOver(y, 1e3 * last) && walk.b.LevelSmoothOver(ToBody(walk.bInA, y), 1e3 * last);
+		                     walk.boundsA && walk.boundsA->LevelSmoothOver(y, 1e3 * last) && walk.boundsB &&
+		                     walk.boundsB->LevelSmoothOver(ToBody(walk.bInA, y), 1e3 * last);
 		last = stepLength;
 		if (stepLength <= tolerance || settled)
 		{
@@ -354,9 +358,11 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	LevelResult result;
 	result.method = SolveMethod::grid;
 	const double LB = std::isnan(levelB) ? b.SurfaceLevel() : levelB;
-	const SurfaceSamples* samples = &b.SamplesRef(std::max(8, options.gridSamples));
+	const SampleRuns& hierarchy = SampleRunsOf(b, std::max(8, options.gridSamples));
+	const SurfaceSamples* samples = hierarchy.samples;
 	const int n = samples->Count();
-	SurfaceWalk walk{a, b, Relative(pa, pb), LB};
+	const LevelBounds* const boundsA = a.Bounds();
+	SurfaceWalk walk{a, b, Relative(pa, pb), LB, boundsA, b.Bounds()};
 
 	// Level of A at every sample of B's surface (the paper's grid), evaluated where needed. The
 	// work arrays are the thread's own, kept between calls (allocating them on every call was a
@@ -373,8 +379,8 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	// Sized once here and used through plain pointers below: through the vectors, every access
 	// reloaded the array's address (a virtual call or a store through a double* may have moved
 	// it, as far as the compiler knows).
-	const int runs = (n + SurfaceSamples::kRunLength - 1) / SurfaceSamples::kRunLength;
-	const int groups = (runs + SurfaceSamples::kGroupRuns - 1) / SurfaceSamples::kGroupRuns;
+	const int runs = (n + SampleRuns::kRunLength - 1) / SampleRuns::kRunLength;
+	const int groups = (runs + SampleRuns::kGroupRuns - 1) / SampleRuns::kGroupRuns;
 	scratch.value.resize(n);
 	scratch.inA.resize(n);
 	scratch.bound.resize(runs);
@@ -400,50 +406,50 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	// Samples are scanned a run at a time: run g is samples g·kRunLength … (g+1)·kRunLength, its
 	// last sample being the next run's first (sample 0 for the last run).
 	auto runSamples = [&](int g, int& first, int& last) {
-		first = g * SurfaceSamples::kRunLength;
-		last = std::min(first + SurfaceSamples::kRunLength, n);
+		first = g * SampleRuns::kRunLength;
+		last = std::min(first + SampleRuns::kRunLength, n);
 	};
 	char* const scanned = scratch.scanned.data(); // per run: evaluated whole
 	int* const scannedRuns = scratch.scannedRuns.data(); // those runs (in increasing order, sorted below)
 	int scannedCount = 0;
 	bool ok = true;
-	bool bounded = ownLevel && int(samples->runCentre.size()) == runs;
+	bool bounded = ownLevel && boundsA && int(hierarchy.runCentre.size()) == runs;
 	// Groups of runs are bounded first (their discs enclose their runs'), and a run's own disc
 	// only where its group's bound does not already rule it out: about half the bounds of a
 	// heart contact, which were a sixth of its time.
-	bool grouped = bounded && int(samples->groupCentre.size()) == groups;
+	bool grouped = bounded && int(hierarchy.groupCentre.size()) == groups;
 	double* const bound = scratch.bound.data();
 	double* const groupBound = scratch.groupBound.data();
 	const double noBound = -std::numeric_limits<double>::infinity();
-	// Discs are bounded together (Shape::LevelLowerBounds: the heart does two at a time).
+	// Discs are bounded together (LevelBounds::LevelLowerBounds: the heart does two at a time).
 	Vec2* const discs = scratch.discs.data();
 	auto boundDiscs = [&](const std::vector<Vec2>& centres, const std::vector<double>& radii, int first, int last, double* out) {
 		for (int i = first; i < last; ++i)
 			discs[i - first] = ToWorld(walk.bInA, centres[i]);
-		a.LevelLowerBounds(discs, radii.data() + first, last - first, out);
+		boundsA->LevelLowerBounds(discs, radii.data() + first, last - first, out);
 	};
 	if (grouped)
 	{
-		boundDiscs(samples->groupCentre, samples->groupRadius, 0, groups, groupBound);
+		boundDiscs(hierarchy.groupCentre, hierarchy.groupRadius, 0, groups, groupBound);
 		for (int G = 0; G < groups && grouped; ++G)
 			grouped = groupBound[G] > noBound; // else bound every run
 	}
 	if (bounded && !grouped)
 	{
-		boundDiscs(samples->runCentre, samples->runRadius, 0, runs, bound);
+		boundDiscs(hierarchy.runCentre, hierarchy.runRadius, 0, runs, bound);
 		for (int g = 0; g < runs && bounded; ++g)
 			bounded = bound[g] > noBound; // else no bound: scan everything
 	}
 	// Group G's runs: their bounds, each at least the group's (a run's disc lies in its group's),
 	// so that a run without a bound of its own keeps the group's.
 	auto groupRuns = [&](int G, int& first, int& last) {
-		first = G * SurfaceSamples::kGroupRuns;
-		last = std::min(first + SurfaceSamples::kGroupRuns, runs);
+		first = G * SampleRuns::kGroupRuns;
+		last = std::min(first + SampleRuns::kGroupRuns, runs);
 	};
 	auto boundRuns = [&](int G) {
 		int first, last;
 		groupRuns(G, first, last);
-		boundDiscs(samples->runCentre, samples->runRadius, first, last, bound + first);
+		boundDiscs(hierarchy.runCentre, hierarchy.runRadius, first, last, bound + first);
 		for (int g = first; g < last; ++g)
 			bound[g] = bound[g] > groupBound[G] ? bound[g] : groupBound[G];
 	};
@@ -531,10 +537,10 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				break;
 			// A last look with A's tighter bound (where it has one) over the run's box, before
 			// the run's samples.
-			OrientedBox box = samples->runBox[g];
+			OrientedBox box = hierarchy.runBox[g];
 			box.centre = ToWorld(walk.bInA, box.centre);
 			box.axis = Rotate(walk.bInA.q, box.axis);
-			if (a.TightLevelLowerBound(box) > lowest)
+			if (boundsA->TightLevelLowerBound(box) > lowest)
 				continue;
 			scan(g);
 		}
@@ -640,7 +646,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				const Vec2 centres[2] = {0.5 * (inA[before] + inA[k]), 0.5 * (inA[k] + inA[after])};
 				const double radii[2] = {segmentRadius(inA[before], inA[k]), segmentRadius(inA[k], inA[after])};
 				double bounds[2];
-				a.LevelLowerBounds(centres, radii, 2, bounds);
+				boundsA->LevelLowerBounds(centres, radii, 2, bounds);
 				if (bounds[0] > bestValue && bounds[1] > bestValue)
 					continue;
 			}
@@ -672,7 +678,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		for (int r = 0, count = bounded ? scannedCount : runs; r < count; ++r)
 		{
 			const int g = bounded ? scannedRuns[r] : r;
-			if (bounded && !reaches(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]))
+			if (bounded && !reaches(ToWorld(walk.bInA, hierarchy.runCentre[g]), hierarchy.runRadius[g]))
 				continue;
 			int first, last;
 			runSamples(g, first, last);
@@ -682,7 +688,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				if (!MeetsCornerRay(a, p, q) || raySolved[i] == generation)
 					continue; // (no ray here, or solved by the refinement)
 				// (CornerRayCrossing tries every corner ray.)
-				if (!bounded || !(a.LevelLowerBound(0.5 * (p + q), segmentRadius(p, q)) > bestValue))
+				if (!bounded || !(boundsA->LevelLowerBound(0.5 * (p + q), segmentRadius(p, q)) > bestValue))
 					CornerRayCrossing(walk, p, q, bestValue, bestPoint);
 			}
 		}
