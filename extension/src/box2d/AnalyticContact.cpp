@@ -271,13 +271,13 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		}
 		// Separating axes before the solve: the last normal this contact found (the exact
 		// separating direction then, and still one while the pair drifts apart or rests apart),
-		// then the line between the centres. In the hopper benchmark a third of the pairs that
-		// reach this point are apart, and most of them stop here. Their warm start is kept.
+		// then the line between the centres. In a granular scene many of the pairs that reach
+		// this point are apart, and most of them stop here. Their warm start is kept.
 		// Not for a pair the last solve found touching: it almost always still touches, and then
 		// both axes fail, after the exact support values wherever the shape's bounds are loose (a
-		// superellipse n = 4 touches in its bounds' gap: in a 1000-particle packing, 1.14M failed
-		// exact tests beside 0.69M touching solves; 28k without them, at 6k more solves of pairs
-		// that had come apart). Such a pair's solve tells it as exactly (separation > 0: no points).
+		// superellipse n = 4 touches in its bounds' gap), at more cost than the few solves of
+		// pairs that came apart. Such a pair's solve tells it as exactly (separation > 0: no
+		// points).
 		if (!m_wasTouching)
 		{
 			if (m_hasNormal && SeparatedAlong(shapeA, poseA, shapeB, poseB, m_lastNormal))

@@ -169,8 +169,8 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 	// disturbs less (at the root they are opposed: the point minimises (1 − s)λA + sλB), from
 	// residuals computed in each body frame: re-deriving it from the double point's gradient
 	// would lose up to 1e-7 rad on 1000:1 needles.
-	// Whether X is a corner of either shape, for the normal and for each point's search (found
-	// once each: four times, as it was, was 1 % of a heart contact's instructions).
+	// Whether X is a corner of either shape, found once each for the normal and for each point's
+	// search.
 	const bool cornerA = AtCorner(a, ToBody(pa, X)), cornerB = AtCorner(b, ToBody(pb, X));
 	c.normal = level.method == SolveMethod::ellipsePair ? level.normal
 	                                                    : ContactNormal(a, pa, b, pb, X, pointOnB, gradientA, cornerA, cornerB);

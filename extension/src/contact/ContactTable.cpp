@@ -179,8 +179,8 @@ ContactResult ContactFromLevelChain(LevelFunction level, const Shape& a, const P
 ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
                              WarmStart* warm)
 {
-	// (One named result, built in the caller's: with other objects returned beside it, it was
-	// copied out on every contact.)
+	// (One named result, so that it is built in the caller's: returning other objects beside
+	// it would copy it out on every contact.)
 	ContactResult c = EllipsePairContact(a, pa, b, pb, warm);
 	if (Declined(c))
 		c = ContactFromLevelChain(&EllipseLevelChain, a, pa, b, pb, options, warm);

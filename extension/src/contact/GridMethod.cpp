@@ -56,9 +56,8 @@ struct SurfaceWalk
 };
 
 // Whether the direction of x lies on the counter-clockwise arc of directions from `from` to `to`
-// (ends included), by cross products: the polar angles' comparison without atan2 (which, with
-// the unwrapping, was a tenth of a heart contact's Newton refinement). Arcs of π or more are
-// those whose complement, under π, does not hold x strictly.
+// (ends included), by cross products: the polar angles' comparison without atan2 and its
+// unwrapping. Arcs of π or more are those whose complement, under π, does not hold x strictly.
 inline bool WithinArc(Vec2 from, Vec2 to, Vec2 x)
 {
 	if (Cross(from, to) > 0.0)
@@ -127,11 +126,10 @@ bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, doubl
 		// last, the error left, K·|δ|² with K = |δ|/|δ_last|², a thousand times below the
 		// tolerance, and both levels smooth within a thousand last steps of the point. Near a
 		// heart's axis (its tip, its notch) or a superellipse's, where an exponent is not an
-		// even integer, the level is not smooth at the steps' scale: without that condition the
-		// prediction let the worst one-sided heart normals of b2a_stress drift from 6e-12 to
-		// 2e-10 rad, and without the superellipse's 14 more of its heart–superellipse answers
-		// were off by over 1e4 times their rounding floor; with the error left ten times below
-		// the tolerance, 4 more. (One Newton step in five a heart–heart contact, 2 % of it.)
+		// even integer, the level is not smooth at the steps' scale and the prediction fails
+		// (normals and points drift far above their rounding floor): there, and where either
+		// shape claims no smoothness, the last step is taken. The margin of a thousand, not
+		// ten, keeps the prediction's misses below rounding.
 		const bool settled = last > 0.0 && stepLength < 0.25 * last &&
 		                     1e3 * (stepLength / (last * last)) * (stepLength * stepLength) <= tolerance &&
 		                     walk.boundsA && walk.boundsA->LevelSmoothOver(y, 1e3 * last) && walk.boundsB &&
@@ -268,19 +266,16 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 	}
 	// Newton starts at the vertex of the parabola through the three samples' values, on the
 	// quadratic through their points (a point off B's curve by the cube of the spacing, which
-	// the constraint's row corrects): its first step is then about a hundredth of the sample's
-	// (medians on b2a_bench_pairs' heart poses: 0.001 of the bracket against 0.12), and one
-	// step of four is saved. The vertex lies within half a spacing of the sample (the
+	// the constraint's row corrects): its first step is then about a hundredth of the sample's,
+	// and one step of four is saved. The vertex lies within half a spacing of the sample (the
 	// sample is the lowest of the three). Only where the samples are dense against A's level:
 	// the bracket under half the sample's distance from A's centre, the length over which a
-	// level of the superellipse family or the heart's varies by its own order (b2a_bench_pairs'
-	// heart poses: 0.075 of it typically, 0.34 at most). Sparser (a particle a thousandth the
-	// size of the one whose samples it is rescaled onto, or a deep overlap near a heart's cusp;
-	// b2a_stress found both) the bracket may hold two minima, the parabola says little, and
-	// Newton starts at the sample as before. And where Newton from the vertex moves farther
-	// than 0.075 of the bracket (0.061 at most on the bench's poses), Newton from the sample
-	// runs too and the lower answer is kept. (b2a_stress, 300,000 configurations: the same
-	// error histograms as the sample's start alone but for rounding-level moves.)
+	// level of the superellipse family or the heart's varies by its own order. Sparser (a
+	// particle a thousandth the size of the one whose samples it is rescaled onto, or a deep
+	// overlap near a heart's cusp) the bracket may hold two minima, the parabola says little,
+	// and Newton starts at the sample. And where Newton from the vertex moves farther than
+	// 0.075 of the bracket (a vertex that was no good guess), Newton from the sample runs too
+	// and the lower answer is kept.
 	Vec2 start = point;
 	const double curvature = valueBefore - 2.0 * sampleValue + valueAfter;
 	const bool dense = reach <= 0.5 * Length(ToWorld(walk.bInA, point));
@@ -312,8 +307,8 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 	}
 	// A's corner rays: the crossing in each of the two sample segments beside the sample that
 	// meets one. The corner-ray pass of SolveGridScale solves the same segments (of the scanned
-	// runs) the same way; the ones solved here are marked, and it skips them (it solved them
-	// again, to the same crossing: 3 % of a heart contact).
+	// runs) the same way; the ones solved here are marked, and it skips them (it would solve
+	// them again, to the same crossing).
 	const Pose& bInA = walk.bInA;
 	bool crossed = false;
 	for (const int i : {(k + n - 1) % n, k})

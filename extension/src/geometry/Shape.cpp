@@ -244,7 +244,7 @@ void DenseSamples(const Shape& shape, int resolution, std::vector<DensePoint>& d
 			// Turned by more than turnMax: a test on the cross and dot products, without atan2.
 			const Vec2 in = pm - task.p0, out = task.p1 - pm;
 			const double along = Dot(in, out), across = std::fabs(Cross(in, out));
-			// (Turned back, along < 0, counts; a zero or non-finite chord does not, as before.)
+			// (Turned back, along < 0, counts; a zero or non-finite chord does not.)
 			const bool turning = along < 0.0 || across > tanTurnMax * along;
 			if ((longChord || turning) && task.depth < 40)
 			{
@@ -284,8 +284,8 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 	const double L = m_surfaceLevel;
 	// 1. Dense adaptive polar sampling: split an angle interval while its chord is long or
 	//    the chord direction turns, so thin tips and cusps are resolved.
-	//    Below 32 samples (a proxy's 7) a pass for 32; from 32 up the default's, as before (the
-	//    grid method's samples, whose accuracy the benchmarks report, stay as they were).
+	//    Below 32 samples (a proxy's 7) a pass for 32, which needs no finer polyline; from 32 up
+	//    the default's, whose resolution the grid method's samples are spread along.
 	const int resolution = count < 32 ? 32 : kDefaultSampleCount;
 	DenseCache& cache = t_denseCache;
 	if (cache.serial != m_serial || cache.resolution != resolution)
