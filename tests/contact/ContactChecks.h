@@ -43,9 +43,9 @@ inline Pose Moved(const Pose& p, double phi, Vec2 t)
 inline Vec2 MovedPoint(Vec2 X, double phi, Vec2 t) { return Rotate(Rot(phi), X) + t; }
 inline Vec2 MovedVector(Vec2 v, double phi) { return Rotate(Rot(phi), v); }
 
-/// A circle of radius r as a user shape (family `user`): the same geometry as MakeCircle, but
-/// the dispatch table sends it through the general smooth-convex path (Newton) instead of the
-/// circle closed form.
+/// A circle of radius r as a user shape (kind smooth_convex): the same geometry as MakeCircle,
+/// but the dispatch table sends it through the general smooth-convex path (Newton) instead of
+/// the circle closed form.
 inline ShapePtr MakeUserCircle(double r)
 {
 	UserShapeDef def;
@@ -61,7 +61,7 @@ inline ShapePtr MakeUserCircle(double r)
 	return MakeUserShape(def);
 }
 
-/// An ellipse x²/a² + y²/b² ≤ 1 as a user shape (family `user`, smooth convex).
+/// An ellipse x²/a² + y²/b² ≤ 1 as a user shape (kind smooth_convex).
 inline ShapePtr MakeUserEllipse(double a, double b)
 {
 	UserShapeDef def;

@@ -441,10 +441,14 @@ TEST_CASE("heart: LevelLowerBounds, two discs at a time, is LevelLowerBound bit 
 		else
 			CHECK(out[i] == one);
 	}
-	// A shape without bounds of its own: the default loop answers −∞ for each.
-	const auto plain = MakeUserShape(UserHeartDef(0.8));
+	// A shape without bounds of its own has none to give (the searches then bound nothing), and
+	// the default loop answers −∞ for each disc.
+	CHECK(MakeUserShape(UserHeartDef(0.8))->Bounds() == nullptr);
+	struct NoBounds : LevelBounds
+	{
+	} plain;
 	std::vector<double> none(3, 0.0);
-	plain->LevelLowerBounds(centres.data(), radii.data(), 3, none.data());
+	plain.LevelLowerBounds(centres.data(), radii.data(), 3, none.data());
 	for (double b : none)
 		CHECK(b == -std::numeric_limits<double>::infinity());
 }

@@ -597,9 +597,9 @@ TEST_CASE("superellipse: LevelLowerBound is below the level over the disc, tight
 		const Vec2 c(0.3 * s->A(), -0.2 * s->B());
 		CHECK(RelativeError(s->LevelLowerBound(c, 0.0), level(c)) < 1e-14);
 	}
-	const auto user = MakeUserShape(UserHeartDef(1.0));
-	CHECK(user->LevelLowerBound(Vec2(0.5, 0.5), 0.1) == -std::numeric_limits<double>::infinity());
-	CHECK(user->LevelUpperBound(Vec2(0.5, 0.5), 0.1) == std::numeric_limits<double>::infinity());
+	// A user shape has no bounds (LevelBounds' −∞ and +∞ throughout): none to give.
+	CHECK(MakeUserShape(UserHeartDef(1.0))->Bounds() == nullptr);
+	CHECK(MakeSuperellipse(1.0, 0.5, 4.0, 4.0)->Bounds()->LevelUpperBound(Vec2(0.5, 0.5), 0.1) == std::numeric_limits<double>::infinity());
 }
 
 TEST_CASE("superellipse: LevelSmoothOver excludes the axes where an exponent is not an even integer, and the zeta form's centre")

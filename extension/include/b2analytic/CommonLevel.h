@@ -76,8 +76,8 @@ LevelFunction GetLevelFunction(ShapeKind a, ShapeKind b);
 /// the crossing; otherwise a bracketed root of d/dθ λA(X_B(θ)) or a Brent minimisation. The
 /// lowest `gridCandidates` local minima are refined, so that shapes with several local minima
 /// (the heart's cleft) get the global one. At B's own level, runs of samples whose disc A's
-/// LevelLowerBound puts above the lowest level found are skipped (they cannot hold the minimum),
-/// so a particle's far side costs one bound per run. `point` lies on B's surface.
+/// bounds (Shape::Bounds) put above the lowest level found are skipped (they cannot hold the
+/// minimum), so a particle's far side costs one bound per run. `point` lies on B's surface.
 LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                            const SolverOptions& options = {}, double levelB = 0.0 / 0.0);
 

@@ -81,6 +81,7 @@ ContactResult NewtonContact(const Shape& a, const Pose& pa, const Shape& b, cons
 /// By the shapes' own flags: NewtonContact for two smooth convex shapes, GridContact otherwise
 /// (what the table's default cells give for kinds of those solver classes).
 ContactResult ConvexContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, WarmStart* warm);
+
 /// Which one-sided grid solves GridContact runs: one particle rescaled onto the other's surface
 /// (its samples), or both ways.
 enum class GridSide

@@ -14,7 +14,7 @@ namespace b2a
 /// The notch at (0, √α) and the tip at (0, −√α) are corners; along the axis x = 0 the level
 /// function is not differentiable in x, and there the reported derivatives drop the singular
 /// |x|^{2/3} terms (∂/∂x = 0, ∂²/∂x² = 2, ∂²/∂x∂y = 0). Not convex: contacts use the grid method.
-class HeartShape final : public Shape
+class HeartShape final : public Shape, public LevelBounds
 {
 public:
 	/// Heart of size α; throws InvalidParameter unless α is finite and > 0.
@@ -27,6 +27,9 @@ public:
 	void Levels(const Vec2* x, int count, double* out) const override;
 	LevelDerivatives Derivatives(Vec2 x) const override;
 	double RadiusAt(Vec2 u, double level) const override;
+	/// Every bound of LevelBounds, which the grid method and the line searches inside and toward
+	/// the heart use.
+	const LevelBounds* Bounds() const override { return this; }
 	/// x² + y² − |x|^{2/3} y bounded term by term over the disc (one cube root).
 	double LevelLowerBound(Vec2 centre, double radius) const override;
 	/// LevelLowerBound of two discs at a time (SSE2 on x86-64), each LevelLowerBound's bit for bit.
@@ -38,7 +41,7 @@ public:
 	bool LevelSmoothOver(Vec2 centre, double radius) const override { return std::fabs(centre.x) >= radius; }
 	/// The Hessian's eigenvalues bounded over the disc, off the axis (|cx| ≥ 2ρ); false elsewhere.
 	bool CurvatureBounds(Vec2 centre, double radius, double& lowest, double& highest) const override;
-	/// See Shape::LevelUpperBound.
+	/// See LevelBounds::LevelUpperBound.
 	double LevelUpperBound(Vec2 centre, double radius) const override;
 
 	/// The size parameter α.

@@ -66,26 +66,9 @@ struct SurfaceSamples
 	double maxSpacing = 0.0;    ///< largest distance between consecutive samples
 	double maxDeviation = 0.0;  ///< largest measured distance from the true curve to the sample polygon
 
-	/// Discs enclosing runs of the curve: run g spans the arcs from sample g·kRunLength to sample
-	/// (g+1)·kRunLength (cyclic; the last run may be shorter). The radius covers the samples and
-	/// the measured deviation of the curve between them, twice over. The grid method skips a run
-	/// where a lower bound of A's level over its disc exceeds a level it has already found.
-	std::vector<Vec2> runCentre;
-	std::vector<double> runRadius; ///< radius of each run's disc
-	/// Boxes enclosing the runs, each aligned with its run's chord (first sample to last) and
-	/// holding the samples and, by the discs' rule, twice the curve's measured deviation from
-	/// them: a run's arc bends little over its length, so the box is thin where the disc is
-	/// round, and a bound over it need not cover the disc's far sides.
-	std::vector<OrientedBox> runBox;
-	/// Discs enclosing groups of runs: group G holds runs G·kGroupRuns … (G+1)·kGroupRuns − 1
-	/// (the last group may hold fewer) and its disc encloses theirs. The grid method bounds the
-	/// groups first and a run's own disc only where its group's bound does not rule it out.
-	std::vector<Vec2> groupCentre;
-	std::vector<double> groupRadius; ///< radius of each group's disc
-	/// Arcs per run.
-	static constexpr int kRunLength = 8;
-	/// Runs per group.
-	static constexpr int kGroupRuns = 4;
+	/// The measured distance of the true curve from each sample arc's chord: arc k, from sample k
+	/// to sample k + 1 (cyclic), at three points between them (the largest is maxDeviation).
+	std::vector<double> arcDeviation;
 
 	/// Number of samples.
 	int Count() const { return int(point.size()); }
@@ -100,6 +83,80 @@ struct SurfaceSamples
 		if (hi < angle[k]) hi += 2.0 * kPi;
 	}
 };
+
+/// Bounds of a shape's level over discs and boxes: an optional capability (Shape::Bounds) with
+/// which the contact layer's searches skip work, never changing an answer. The grid method rules
+/// out runs of surface samples whose disc (or box) A's level stays above a level already found,
+/// and ends Newton a step early where the level is smooth; line searches inside or toward a
+/// non-convex particle step over stretches the bounds clear. Every default claims nothing (−∞,
+/// +∞, false); a shape overrides what it can bound (the heart all of it, the superellipse the
+/// lower bound and smoothness).
+class LevelBounds
+{
+public:
+	virtual ~LevelBounds() = default;
+
+	/// A lower bound of the level over the disc |x − centre| ≤ radius (body frame); −∞ for none.
+	virtual double LevelLowerBound(Vec2 centre, double radius) const
+	{
+		(void)centre;
+		(void)radius;
+		return -std::numeric_limits<double>::infinity();
+	}
+	/// LevelLowerBound of `count` discs (centres[i], radii[i]) into out[0 … count − 1], in one
+	/// call: the grid method bounds its groups and runs of samples together. The default calls
+	/// LevelLowerBound; the heart evaluates two discs at a time.
+	virtual void LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const;
+	/// A lower bound of the level over a box (body frame), tighter than LevelLowerBound's over
+	/// the disc around it and costlier: the grid method's last look at a run of samples, over
+	/// the run's box, that LevelLowerBound did not rule out over its disc, before it evaluates
+	/// the run. −∞ for none (the heart's is Taylor's, about the box's centre).
+	virtual double TightLevelLowerBound(const OrientedBox& box) const
+	{
+		(void)box;
+		return -std::numeric_limits<double>::infinity();
+	}
+	/// Whether the level is smooth (three times differentiable) over the disc |x − centre| ≤
+	/// radius (body frame): where the grid method's refinement may end a step early, Newton's
+	/// convergence predicted from its steps. False claims nothing.
+	virtual bool LevelSmoothOver(Vec2 centre, double radius) const
+	{
+		(void)centre;
+		(void)radius;
+		return false;
+	}
+	/// Bounds of the level's curvature over the disc |x − centre| ≤ radius (body frame): every
+	/// eigenvalue of the level's Hessian lies in [lowest, highest] there, so that along a line
+	/// through the disc the level's second derivative does too (times the direction's squared
+	/// length). A line search inside or toward a non-convex particle brackets its crossing by
+	/// the parabolas they give, where the level is convex over the stretch ahead. False where
+	/// there are none (the default) or the level is not smooth over the disc.
+	virtual bool CurvatureBounds(Vec2 centre, double radius, double& lowest, double& highest) const
+	{
+		(void)centre;
+		(void)radius;
+		lowest = -std::numeric_limits<double>::infinity();
+		highest = std::numeric_limits<double>::infinity();
+		return false;
+	}
+	/// An upper bound of the level over the disc |x − centre| ≤ radius (body frame), with which
+	/// a line search inside a non-convex particle steps over stretches that cannot leave it.
+	/// +∞ for none: the search marches in steps finer than the samples.
+	virtual double LevelUpperBound(Vec2 centre, double radius) const
+	{
+		(void)centre;
+		(void)radius;
+		return std::numeric_limits<double>::infinity();
+	}
+
+protected:
+	LevelBounds() = default;
+	LevelBounds(const LevelBounds&) = default;
+	LevelBounds& operator=(const LevelBounds&) = default;
+};
+
+/// The grid method's acceleration data for a shape's samples (contact/SampleRuns.h): opaque here.
+struct SampleRuns;
 
 /// An analytic particle shape described by a level function λ(x) in its body frame.
 ///
@@ -171,60 +228,9 @@ public:
 	/// Support(d)·d, which shapes with a closed form for the value override (separating axes and
 	/// AABBs need the value, not the point).
 	virtual double SupportValue(Vec2 d) const { return Dot(Support(d), d); }
-	/// A lower bound of the level over the disc |x − centre| ≤ radius (body frame), for the grid
-	/// method's pruning of surface runs that cannot hold the minimum. The default, −∞, means no
-	/// bound: every sample is evaluated. Shapes whose level is costly (the heart) override it.
-	virtual double LevelLowerBound(Vec2 centre, double radius) const
-	{
-		(void)centre;
-		(void)radius;
-		return -std::numeric_limits<double>::infinity();
-	}
-	/// LevelLowerBound of `count` discs (centres[i], radii[i]) into out[0 … count − 1], in one
-	/// call: the grid method bounds its groups and runs of samples together. The default calls
-	/// LevelLowerBound; the heart evaluates two discs at a time.
-	virtual void LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const;
-	/// A lower bound of the level over a box (body frame), tighter than LevelLowerBound's over
-	/// the disc around it and costlier: the grid method's last look at a run of samples, over
-	/// the run's box, that LevelLowerBound did not rule out over its disc, before it evaluates
-	/// the run. The default, −∞, means none (the heart's is Taylor's, about the box's centre).
-	virtual double TightLevelLowerBound(const OrientedBox& box) const
-	{
-		(void)box;
-		return -std::numeric_limits<double>::infinity();
-	}
-	/// Whether the level is smooth (three times differentiable) over the disc |x − centre| ≤
-	/// radius (body frame): where the grid method's refinement may end a step early, Newton's
-	/// convergence predicted from its steps. The default, false, claims nothing (a user's shape).
-	virtual bool LevelSmoothOver(Vec2 centre, double radius) const
-	{
-		(void)centre;
-		(void)radius;
-		return false;
-	}
-	/// Bounds of the level's curvature over the disc |x − centre| ≤ radius (body frame): every
-	/// eigenvalue of the level's Hessian lies in [lowest, highest] there, so that along a line
-	/// through the disc the level's second derivative does too (times the direction's squared
-	/// length). A line search inside or toward a non-convex particle brackets its crossing by
-	/// the parabolas they give, where the level is convex over the stretch ahead. False where
-	/// the shape has none (the default) or the level is not smooth over the disc.
-	virtual bool CurvatureBounds(Vec2 centre, double radius, double& lowest, double& highest) const
-	{
-		(void)centre;
-		(void)radius;
-		lowest = -std::numeric_limits<double>::infinity();
-		highest = std::numeric_limits<double>::infinity();
-		return false;
-	}
-	/// An upper bound of the level over the disc |x − centre| ≤ radius (body frame), with which
-	/// a line search inside a non-convex particle steps over stretches that cannot leave it.
-	/// The default, +∞, means no bound: the search marches in steps finer than the samples.
-	virtual double LevelUpperBound(Vec2 centre, double radius) const
-	{
-		(void)centre;
-		(void)radius;
-		return std::numeric_limits<double>::infinity();
-	}
+	/// The shape's bounds of its level (LevelBounds), an optional capability: null (the default)
+	/// where it has none, and the contact layer's searches then bound nothing.
+	virtual const LevelBounds* Bounds() const { return nullptr; }
 	/// Bounds lower ≤ h(d) ≤ upper on the support value h(d) = max over the particle of x·d (body
 	/// frame, d need not be unit), for tests that can often decide without h itself: a separating
 	/// axis is rejected or confirmed by the bounds alone unless the gap lies between them. The
@@ -283,10 +289,11 @@ public:
 
 	/// Surface samples at the own level (count ≥ 3), computed on first use and cached.
 	std::shared_ptr<const SurfaceSamples> Samples(int count = kDefaultSampleCount) const;
-	/// The same samples by reference, valid as long as the shape: for the hot paths (the grid
-	/// method, line crossings of non-convex shapes), which then skip Samples()'s lock and the
-	/// handle's reference count once the count's samples exist (the last count asked for is
-	/// kept in an atomic pointer, so threads that share the shape do not queue on the lock).
+	/// The same samples by reference, valid as long as the shape: for the hot paths (the
+	/// one-sided Newton's start, line crossings of non-convex shapes), which then skip Samples()'s
+	/// lock and the handle's reference count once the count's samples exist (the last count
+	/// asked for is kept in an atomic pointer, so threads that share the shape do not queue on
+	/// the lock).
 	const SurfaceSamples& SamplesRef(int count = kDefaultSampleCount) const;
 	/// The default number of surface samples for the grid method.
 	static constexpr int kDefaultSampleCount = 256;
@@ -325,6 +332,11 @@ private:
 	mutable std::mutex m_sampleMutex;
 	mutable std::vector<std::pair<int, std::shared_ptr<const SurfaceSamples>>> m_samples;
 	mutable std::atomic<const SurfaceSamples*> m_lastSamples{nullptr}; // one of m_samples' (never removed)
+	// The grid method's run hierarchy per sample count, built and kept by the contact layer
+	// (contact/SampleRuns.h) under m_sampleMutex, the last one asked for in an atomic pointer.
+	friend struct SampleRunsCache;
+	mutable std::vector<std::shared_ptr<const SampleRuns>> m_runs;
+	mutable std::atomic<const SampleRuns*> m_lastRuns{nullptr};
 };
 
 /// Shared, immutable handle to a shape.

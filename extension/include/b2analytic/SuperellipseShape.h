@@ -33,7 +33,7 @@ struct SuperellipseTerms
 /// applies); 1 ≤ n < 2 is convex but has corners or infinite curvature on the axes.
 /// At a point on an axis where an exponent is below 2, the infinite second derivative is
 /// reported as 0 (the Hessian is not used for such shapes).
-class SuperellipseShape final : public Shape
+class SuperellipseShape final : public Shape, public LevelBounds
 {
 public:
 	/// Superellipse |x/a|^n + |y/b|^m; throws InvalidParameter for a, b not finite and > 0, n, m
@@ -70,6 +70,8 @@ public:
 	/// larger root of a quadratic, for other exponents Newton on a convex function of t, from
 	/// where it descends monotonically (false when the line misses or only grazes the particle).
 	bool FarCrossing(Vec2 x, Vec2 d, double& t) const override;
+	/// LevelLowerBound and LevelSmoothOver of LevelBounds (the others claim nothing).
+	const LevelBounds* Bounds() const override { return this; }
 	/// Over the disc |x − c| ≤ ρ: |x| ≥ (|cx| − ρ)₊ and |y| ≥ (|cy| − ρ)₊, and the level grows
 	/// with |x| and |y|. The grid method prunes with it where a superellipse meets a heart. (No
 	/// upper bound: only the line search inside a non-convex particle would use one.)

@@ -271,13 +271,13 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		}
 		// Separating axes before the solve: the last normal this contact found (the exact
 		// separating direction then, and still one while the pair drifts apart or rests apart),
-		// then the line between the centres. In the hopper benchmark a third of the pairs that
-		// reach this point are apart, and most of them stop here. Their warm start is kept.
+		// then the line between the centres. In a granular scene many of the pairs that reach
+		// this point are apart, and most of them stop here. Their warm start is kept.
 		// Not for a pair the last solve found touching: it almost always still touches, and then
 		// both axes fail, after the exact support values wherever the shape's bounds are loose (a
-		// superellipse n = 4 touches in its bounds' gap: in a 1000-particle packing, 1.14M failed
-		// exact tests beside 0.69M touching solves; 28k without them, at 6k more solves of pairs
-		// that had come apart). Such a pair's solve tells it as exactly (separation > 0: no points).
+		// superellipse n = 4 touches in its bounds' gap), at more cost than the few solves of
+		// pairs that came apart. Such a pair's solve tells it as exactly (separation > 0: no
+		// points).
 		if (!m_wasTouching)
 		{
 			if (m_hasNormal && SeparatedAlong(shapeA, poseA, shapeB, poseB, m_lastNormal))
@@ -298,8 +298,9 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	}
 	else if (pa.shape && m_kind == Kind::polygonCircle)
 	{
-		// Analytic against a Box2D circle: the circle as an analytic circle at its centre. Box2D
-		// subtracts the circle's radius itself, so B's manifold point is the centre.
+		// Analytic against a Box2D circle: the circle as an analytic circle at its centre, whose
+		// pair the dispatch table decides as any other. Box2D subtracts the circle's radius
+		// itself, so B's manifold point is the centre.
 		if (!m_circle)
 			return;
 		const b2CircleShape* circle = static_cast<const b2CircleShape*>(m_fixtureB->GetShape());
@@ -315,8 +316,9 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	}
 	else
 	{
-		// One analytic side against a Box2D polygon, edge or chain link: the separating axis
-		// against its core geometry; Box2D adds the skin radius.
+		// One analytic side against a Box2D polygon, edge or chain link: its core geometry's
+		// vertices to the dispatch table's polygon column (ComputePolygonContact); Box2D adds the
+		// skin radius.
 		const bool analyticIsA = pa.shape != nullptr;
 		const Side& proxy = analyticIsA ? pa : pb;
 		const b2Shape* sa = m_fixtureA->GetShape();

@@ -83,20 +83,6 @@ ContactResult FailedContact(const LevelResult& level)
 	return c;
 }
 
-int CornerAt(const Shape& s, Vec2 x)
-{
-	// On the ray's side of the centre, |u × x| ≤ sin(1e-7)·|x| (NearCorner's test, without the
-	// atan2).
-	if (s.CornerAngles().empty() || !(LengthSquared(x) > 0.0))
-		return -1;
-	const double off = 1e-7 * Length(x); // sin(1e-7) = 1e-7 to 2e-22
-	const std::vector<Vec2>& rays = s.CornerDirections();
-	for (size_t i = 0; i < rays.size(); ++i)
-		if (Dot(rays[i], x) > 0.0 && std::fabs(Cross(rays[i], x)) < off)
-			return int(i);
-	return -1;
-}
-
 namespace
 {
 // True when the body point lies on one of the shape's corners.
@@ -183,8 +169,8 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 	// disturbs less (at the root they are opposed: the point minimises (1 − s)λA + sλB), from
 	// residuals computed in each body frame: re-deriving it from the double point's gradient
 	// would lose up to 1e-7 rad on 1000:1 needles.
-	// Whether X is a corner of either shape, for the normal and for each point's search (found
-	// once each: four times, as it was, was 1 % of a heart contact's instructions).
+	// Whether X is a corner of either shape, found once each for the normal and for each point's
+	// search.
 	const bool cornerA = AtCorner(a, ToBody(pa, X)), cornerB = AtCorner(b, ToBody(pb, X));
 	c.normal = level.method == SolveMethod::ellipsePair ? level.normal
 	                                                    : ContactNormal(a, pa, b, pb, X, pointOnB, gradientA, cornerA, cornerB);

@@ -3,6 +3,9 @@
 
 #include "b2analytic/Contact.h"
 
+#include <cmath>
+#include <vector>
+
 namespace b2a
 {
 
@@ -26,7 +29,19 @@ inline void TakeOverLevel(ContactResult& c, const LevelResult& level)
 /// The corner (index into CornerDirections and CornerPoints) whose ray the body point lies on,
 /// within 1e-7 rad, or −1 (the heart's tip and notch, the vertices of exponent-1
 /// superellipses): at a corner the gradient has no meaningful direction.
-int CornerAt(const Shape& s, Vec2 x);
+inline int CornerAt(const Shape& s, Vec2 x)
+{
+	// On the ray's side of the centre, |u × x| ≤ sin(1e-7)·|x| (NearCorner's test, without the
+	// atan2).
+	if (s.CornerAngles().empty() || !(LengthSquared(x) > 0.0))
+		return -1;
+	const double off = 1e-7 * Length(x); // sin(1e-7) = 1e-7 to 2e-22
+	const std::vector<Vec2>& rays = s.CornerDirections();
+	for (size_t i = 0; i < rays.size(); ++i)
+		if (Dot(rays[i], x) > 0.0 && std::fabs(Cross(rays[i], x)) < off)
+			return int(i);
+	return -1;
+}
 
 /// ContactFromLevel, given A's body gradient at the level point where the caller has it
 /// (`gradientA`, or null): the grid's contact needs it again for its one-side test.

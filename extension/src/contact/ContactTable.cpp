@@ -1,14 +1,15 @@
 // b2analytic: the one table that decides which solver handles a pair of 2D shape kinds.
 //
-//                  circle    ellipse   superellipse  smooth_convex  convex   non_convex
-//  circle          Circle    Ellipse   Superellipse  Newton         Grid     Grid
-//  ellipse                   Ellipse   Superellipse  Newton         Grid     Grid
-//  superellipse                        Superellipse  Newton         Grid     Grid
-//  smooth_convex                                     Newton         Grid     Grid
-//  convex                                                           Grid     Grid
-//  non_convex                                                                Grid
+//                  circle    ellipse   superellipse  smooth_convex  convex   non_convex   polygon
+//  circle          Circle    Ellipse   Superellipse  Newton         Grid     Grid         SepAxis
+//  ellipse                   Ellipse   Superellipse  Newton         Grid     Grid         SepAxis
+//  superellipse                        Superellipse  Newton         Grid     Grid         SepAxis
+//  smooth_convex                                     Newton         Grid     Grid         SepAxis
+//  convex                                                           Grid     Grid         SepAxis
+//  non_convex                                                                Grid         SepAxis
 //  (symmetric; a kind registered later: Newton between two of solver class smoothConvex, Grid
-//  for any other pair, until a function is registered for the pair)
+//  for any other pair, SepAxis against polygons, until a function is registered for the pair.
+//  polygon: a convex polygon or segment by its vertices, Box2D's polygons, edges and chain links.)
 //
 // Each cell is a chain, written once here: its solver, and where the pair goes when that gives up.
 //  contact        solver                                    → where it gives up      level (SolveCommonLevel)
@@ -17,6 +18,7 @@
 //  Superellipse   inline Newton, raw-level finish            → from NewtonLevel       NewtonLevel
 //  Newton         from NewtonLevel                                                   NewtonLevel
 //  Grid           one side (ChooseGridSide)                  → both ways              GridLevel
+//  SepAxis        separating axis over the support function
 //  "from L": coincident centres → OverlapAxis; else ContactFromLevel of the level chain L.
 //  level chains: CircleLevel   closed form
 //                EllipseLevel  ellipse pair (Perram–Wertheim)  → NewtonLevel
@@ -25,6 +27,8 @@
 //  Explicit methods, for any pair: MethodChoice::newton: from Newton alone (level: Newton alone);
 //  MethodChoice::grid: Grid (level: GridLevel).
 #include "contact/ContactParts.h"
+
+#include "b2analytic/PolygonContact.h"
 
 #include "contact/PairFrame.h"
 #include "contact/PairTable.h"
@@ -76,6 +80,9 @@ struct BuiltTable : Table2
 // Constant-initialized: filled at compile time, before any code runs (so a registration from
 // another file's static initialiser finds it filled), and read without a guard.
 B2A_CONSTINIT BuiltTable g_table;
+
+// The polygon column.
+B2A_CONSTINIT KindColumn<PolygonContactFunction> g_polygonColumn(&SeparatingAxisContact);
 
 Table2& Table() { return g_table; }
 
@@ -172,8 +179,8 @@ ContactResult ContactFromLevelChain(LevelFunction level, const Shape& a, const P
 ContactResult EllipseContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
                              WarmStart* warm)
 {
-	// (One named result, built in the caller's: with other objects returned beside it, it was
-	// copied out on every contact.)
+	// (One named result, so that it is built in the caller's: returning other objects beside
+	// it would copy it out on every contact.)
 	ContactResult c = EllipsePairContact(a, pa, b, pb, warm);
 	if (Declined(c))
 		c = ContactFromLevelChain(&EllipseLevelChain, a, pa, b, pb, options, warm);
@@ -244,6 +251,25 @@ LevelFunction GetLevelFunction(ShapeKind a, ShapeKind b)
 	RequirePair("GetLevelFunction", a, b);
 	bool flipped = false;
 	return Table().Level(a, b, flipped);
+}
+
+void RegisterPolygonContactFunction(ShapeKind kind, PolygonContactFunction function)
+{
+	Table().RequireKind(kind, "RegisterPolygonContactFunction", "kind");
+	RequireFunction("RegisterPolygonContactFunction", function != nullptr);
+	g_polygonColumn.Set(kind, function);
+}
+
+PolygonContactFunction GetPolygonContactFunction(ShapeKind kind)
+{
+	Table().RequireKind(kind, "GetPolygonContactFunction", "kind");
+	return g_polygonColumn.At(kind);
+}
+
+ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* vertices, int count, const Pose& pb,
+                                    const Vec2* guessNormal)
+{
+	return g_polygonColumn.At(a.Kind())(a, pa, vertices, count, pb, guessNormal);
 }
 
 namespace

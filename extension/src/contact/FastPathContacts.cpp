@@ -65,8 +65,8 @@ ContactResult EllipsePairContact(const Shape& a, const Pose& pa, const Shape& b,
 	// solver, the virtual calls and the general line search. The rare cases it does not handle
 	// (coincident centres, a failed solve, no positive multiplier) go on along the chain, and a
 	// line missing a particle takes ContactFromLevel's search.
-	// (Every path returns c, built in the caller's result: with other objects returned beside
-	// it, c was copied out on every contact.)
+	// (Every path returns c, so that it is built in the caller's result: returning other
+	// objects beside it would copy it out on every contact.)
 	ContactResult c;
 	const SuperellipseShape* ea = AsPlainEllipse(a);
 	const SuperellipseShape* eb = ea ? AsPlainEllipse(b) : nullptr;
@@ -125,9 +125,9 @@ ContactResult SuperellipsePairContact(const Shape& a, const Pose& pa, const Shap
 		{
 			hand = &handOver;
 			// For n = m on both shapes (each gauge a norm, f = ψ^n along a ray) the raw levels'
-			// Newton takes over from gauge steps of 10 % of the size as surely as from 5 %, one
-			// gauge evaluation earlier in a quarter of the pairs: cold n = 4 contacts 4 % cheaper,
-			// n = 8 2 %. With n ≠ m it declines 6 % of them from 10 % (n = 4, m = 8: 2 % dearer).
+			// Newton takes over from gauge steps of a tenth of the size as surely as from a
+			// twentieth, a gauge evaluation earlier; with n ≠ m it would decline more pairs from
+			// a tenth, which then cost a full solve, so it keeps the twentieth.
 			const SuperellipseTerms &ta = sa->Terms(), &tb = sb->Terms();
 			if (ta.nInt == ta.mInt && tb.nInt == tb.mInt)
 				handOver.below = 0.1;

@@ -87,11 +87,9 @@ ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const 
 		return OverlapAxisContact(a, pa, b, pb);
 	// The grid method is one-sided (A rescaled onto B's surface). Where the rescaled particle's
 	// centre lies outside the other, one side decides (ChooseGridSide) at about half the cost of
-	// both (0.56 for two hearts; 0.45 for a heart and a superellipse, the superellipse rescaled).
-	// Each side's solve and contact (seen from A), made at most once.
+	// both. Each side's solve and contact (seen from A), made at most once.
 	// (The rescaled particle's body gradient at its point is taken once, by the solve, for its
-	// normal, the contact's and the one-side test: computing it twice more was 1.7 % of a heart
-	// contact, and taking it again after the solve one more evaluation of its derivatives.)
+	// normal, the contact's and the one-side test.)
 	LevelResult ab, ba;
 	ContactResult cab, cba;
 	Vec2 gab, gba;

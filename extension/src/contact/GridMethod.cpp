@@ -4,6 +4,7 @@
 #include "contact/GridScale.h"
 #include "contact/LevelAlongLine.h"
 #include "contact/PairFrame.h"
+#include "contact/SampleRuns.h"
 #include "numerics/RootFinding.h"
 #include "numerics/SmallLinear.h"
 
@@ -25,6 +26,8 @@ struct SurfaceWalk
 	const Shape& b;
 	Pose bInA; // B body → A body
 	double levelB;
+	const LevelBounds* boundsA; // a.Bounds(), b.Bounds() (or null)
+	const LevelBounds* boundsB;
 	mutable int evaluations = 0;
 
 	// λA at B's surface point X_B(θ).
@@ -53,9 +56,8 @@ struct SurfaceWalk
 };
 
 // Whether the direction of x lies on the counter-clockwise arc of directions from `from` to `to`
-// (ends included), by cross products: the polar angles' comparison without atan2 (which, with
-// the unwrapping, was a tenth of a heart contact's Newton refinement). Arcs of π or more are
-// those whose complement, under π, does not hold x strictly.
+// (ends included), by cross products: the polar angles' comparison without atan2 and its
+// unwrapping. Arcs of π or more are those whose complement, under π, does not hold x strictly.
 inline bool WithinArc(Vec2 from, Vec2 to, Vec2 x)
 {
 	if (Cross(from, to) > 0.0)
@@ -124,14 +126,14 @@ bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, doubl
 		// last, the error left, K·|δ|² with K = |δ|/|δ_last|², a thousand times below the
 		// tolerance, and both levels smooth within a thousand last steps of the point. Near a
 		// heart's axis (its tip, its notch) or a superellipse's, where an exponent is not an
-		// even integer, the level is not smooth at the steps' scale: without that condition the
-		// prediction let the worst one-sided heart normals of b2a_stress drift from 6e-12 to
-		// 2e-10 rad, and without the superellipse's 14 more of its heart–superellipse answers
-		// were off by over 1e4 times their rounding floor; with the error left ten times below
-		// the tolerance, 4 more. (One Newton step in five a heart–heart contact, 2 % of it.)
+		// even integer, the level is not smooth at the steps' scale and the prediction fails
+		// (normals and points drift far above their rounding floor): there, and where either
+		// shape claims no smoothness, the last step is taken. The margin of a thousand, not
+		// ten, keeps the prediction's misses below rounding.
 		const bool settled = last > 0.0 && stepLength < 0.25 * last &&
 		                     1e3 * (stepLength / (last * last)) * (stepLength * stepLength) <= tolerance &&
-		                     walk.a.LevelSmoothOver(y, 1e3 * last) && walk.b.LevelSmoothOver(ToBody(walk.bInA, y), 1e3 * last);
+		                     walk.boundsA && walk.boundsA->LevelSmoothOver(y, 1e3 * last) && walk.boundsB &&
+		                     walk.boundsB->LevelSmoothOver(ToBody(walk.bInA, y), 1e3 * last);
 		last = stepLength;
 		if (stepLength <= tolerance || settled)
 		{
@@ -264,19 +266,16 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 	}
 	// Newton starts at the vertex of the parabola through the three samples' values, on the
 	// quadratic through their points (a point off B's curve by the cube of the spacing, which
-	// the constraint's row corrects): its first step is then about a hundredth of the sample's
-	// (medians on b2a_bench_pairs' heart poses: 0.001 of the bracket against 0.12), and one
-	// step of four is saved. The vertex lies within half a spacing of the sample (the
+	// the constraint's row corrects): its first step is then about a hundredth of the sample's,
+	// and one step of four is saved. The vertex lies within half a spacing of the sample (the
 	// sample is the lowest of the three). Only where the samples are dense against A's level:
 	// the bracket under half the sample's distance from A's centre, the length over which a
-	// level of the superellipse family or the heart's varies by its own order (b2a_bench_pairs'
-	// heart poses: 0.075 of it typically, 0.34 at most). Sparser (a particle a thousandth the
-	// size of the one whose samples it is rescaled onto, or a deep overlap near a heart's cusp;
-	// b2a_stress found both) the bracket may hold two minima, the parabola says little, and
-	// Newton starts at the sample as before. And where Newton from the vertex moves farther
-	// than 0.075 of the bracket (0.061 at most on the bench's poses), Newton from the sample
-	// runs too and the lower answer is kept. (b2a_stress, 300,000 configurations: the same
-	// error histograms as the sample's start alone but for rounding-level moves.)
+	// level of the superellipse family or the heart's varies by its own order. Sparser (a
+	// particle a thousandth the size of the one whose samples it is rescaled onto, or a deep
+	// overlap near a heart's cusp) the bracket may hold two minima, the parabola says little,
+	// and Newton starts at the sample. And where Newton from the vertex moves farther than
+	// 0.075 of the bracket (a vertex that was no good guess), Newton from the sample runs too
+	// and the lower answer is kept.
 	Vec2 start = point;
 	const double curvature = valueBefore - 2.0 * sampleValue + valueAfter;
 	const bool dense = reach <= 0.5 * Length(ToWorld(walk.bInA, point));
@@ -308,8 +307,8 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 	}
 	// A's corner rays: the crossing in each of the two sample segments beside the sample that
 	// meets one. The corner-ray pass of SolveGridScale solves the same segments (of the scanned
-	// runs) the same way; the ones solved here are marked, and it skips them (it solved them
-	// again, to the same crossing: 3 % of a heart contact).
+	// runs) the same way; the ones solved here are marked, and it skips them (it would solve
+	// them again, to the same crossing).
 	const Pose& bInA = walk.bInA;
 	bool crossed = false;
 	for (const int i : {(k + n - 1) % n, k})
@@ -340,28 +339,125 @@ struct GridScratch
 	std::vector<std::pair<double, int>> order;
 	std::vector<int> minima;
 };
-} // namespace
 
-LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
-                           double levelB)
+// One grid solve (SolveGridScale): A's level over the samples of B's level-LB curve, found by
+// branch and bound over runs of samples where A has bounds (or by evaluating every sample),
+// then its lowest local minima refined between their neighbours. The steps, in Solve's order:
+// Bound (the groups' and runs' bounds), Scan (branch and bound) or ScanAll, CollectMinima,
+// RefineMinima, CornerRayPass.
+class GridScan
 {
-	return SolveGridScale(a, pa, b, pb, options, levelB, nullptr);
-}
+public:
+	GridScan(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options, double levelB);
+	LevelResult Solve(Vec2* bodyGradientA);
 
-LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
-                           double levelB, Vec2* bodyGradientA)
+private:
+	bool Evaluated(int k) const { return stamp[k] == generation; }
+	// A's level at sample k (in A's frame: inA[k]); false where it is NaN.
+	bool Evaluate(int k)
+	{
+		const Vec2 p = ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB);
+		inA[k] = ToWorld(walk.bInA, p);
+		value[k] = a.Level(inA[k]);
+		stamp[k] = generation;
+		return !std::isnan(value[k]);
+	}
+	// Samples are scanned a run at a time: run g is samples g·kRunLength … (g+1)·kRunLength, its
+	// last sample being the next run's first (sample 0 for the last run).
+	void RunSamples(int g, int& first, int& last) const
+	{
+		first = g * SampleRuns::kRunLength;
+		last = std::min(first + SampleRuns::kRunLength, n);
+	}
+	// Group G's runs.
+	void GroupRuns(int G, int& first, int& last) const
+	{
+		first = G * SampleRuns::kGroupRuns;
+		last = std::min(first + SampleRuns::kGroupRuns, runs);
+	}
+	// A's lower bounds over discs first … last − 1 of the hierarchy's, into out, together
+	// (LevelBounds::LevelLowerBounds: the heart does two at a time).
+	void BoundDiscs(const std::vector<Vec2>& centres, const std::vector<double>& radii, int first, int last, double* out)
+	{
+		for (int i = first; i < last; ++i)
+			discs[i - first] = ToWorld(walk.bInA, centres[i]);
+		boundsA->LevelLowerBounds(discs, radii.data() + first, last - first, out);
+	}
+	// Group G's runs' bounds, each at least the group's (a run's disc lies in its group's), so
+	// that a run without a bound of its own keeps the group's.
+	void BoundRuns(int G)
+	{
+		int first, last;
+		GroupRuns(G, first, last);
+		BoundDiscs(hierarchy.runCentre, hierarchy.runRadius, first, last, bound + first);
+		for (int g = first; g < last; ++g)
+			bound[g] = bound[g] > groupBound[G] ? bound[g] : groupBound[G];
+	}
+	void Bound();
+	void ScanRun(int g);
+	void Scan();
+	void ScanAll();
+	void Consider(int k, int before, int after)
+	{
+		if (value[k] <= value[before] && value[k] < value[after])
+			minima[minimaCount++] = k;
+	}
+	void ConsiderRunEdge(int i);
+	void CollectMinima();
+	Vec2 SamplePoint(int k) const { return ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB); }
+	// The disc holding B's curve between two consecutive samples p and q (A's frame), by the run
+	// discs' rule: half the chord and twice the curve's measured deviation from it.
+	double SegmentRadius(Vec2 p, Vec2 q) const { return 0.5 * Distance(p, q) + 2.0 * samples->maxDeviation; }
+	void RefineMinima(double& bestValue, Vec2& bestPoint);
+	void CornerRayPass(double& bestValue, Vec2& bestPoint);
+
+	const Shape& a;
+	const Shape& b;
+	const Pose& pa;
+	const Pose& pb;
+	const SolverOptions& options;
+	const double LB;
+	const SampleRuns& hierarchy;
+	const SurfaceSamples* const samples;
+	const int n;
+	const LevelBounds* const boundsA;
+	SurfaceWalk walk;
+	const bool ownLevel;
+	const int runs, groups;
+	// The thread's work arrays (GridScratch), sized in the constructor and used through plain
+	// pointers: through the vectors, every access reloaded the array's address (a virtual call or
+	// a store through a double* may have moved it, as far as the compiler knows).
+	std::uint32_t generation = 0;
+	double* value = nullptr;
+	std::uint32_t* stamp = nullptr;
+	std::uint32_t* raySolved = nullptr;
+	Vec2* inA = nullptr; // each evaluated sample in A's body frame
+	char* scanned = nullptr; // per run: evaluated whole
+	int* scannedRuns = nullptr; // those runs (in increasing order once sorted)
+	int scannedCount = 0;
+	double* bound = nullptr;
+	double* groupBound = nullptr;
+	Vec2* discs = nullptr;
+	std::pair<double, int>* order = nullptr;
+	int* minima = nullptr;
+	int minimaCount = 0;
+	bool ok = true;       // no NaN level so far
+	bool bounded = false; // branch and bound over runs (else every sample is evaluated)
+	bool grouped = false; // groups of runs bounded first
+	double lowest = std::numeric_limits<double>::infinity(); // the lowest level scanned
+};
+
+GridScan::GridScan(const Shape& a_, const Pose& pa_, const Shape& b_, const Pose& pb_, const SolverOptions& options_, double levelB)
+	: a(a_), b(b_), pa(pa_), pb(pb_), options(options_), LB(std::isnan(levelB) ? b_.SurfaceLevel() : levelB),
+	  hierarchy(SampleRunsOf(b_, std::max(8, options_.gridSamples))), samples(hierarchy.samples), n(samples->Count()),
+	  boundsA(a_.Bounds()), walk{a_, b_, Relative(pa_, pb_), LB, boundsA, b_.Bounds()}, ownLevel(LB == b_.SurfaceLevel()),
+	  runs((n + SampleRuns::kRunLength - 1) / SampleRuns::kRunLength),
+	  groups((runs + SampleRuns::kGroupRuns - 1) / SampleRuns::kGroupRuns)
 {
-	LevelResult result;
-	result.method = SolveMethod::grid;
-	const double LB = std::isnan(levelB) ? b.SurfaceLevel() : levelB;
-	const SurfaceSamples* samples = &b.SamplesRef(std::max(8, options.gridSamples));
-	const int n = samples->Count();
-	SurfaceWalk walk{a, b, Relative(pa, pb), LB};
-
 	// Level of A at every sample of B's surface (the paper's grid), evaluated where needed. The
-	// work arrays are the thread's own, kept between calls (allocating them on every call was a
-	// tenth of a heart contact), and a sample's value belongs to this call where its stamp is
-	// this call's generation (clearing the array instead was 5 % of a heart contact).
+	// work arrays are the thread's own, kept between calls (no allocation a call), and a
+	// sample's value belongs to this call where its stamp is this call's generation (no
+	// clearing a call).
 	thread_local GridScratch scratch;
 	if (int(scratch.stamp.size()) != n || ++scratch.generation == 0)
 	{
@@ -369,12 +465,7 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 		scratch.raySolved.assign(n, 0);
 		scratch.generation = 1;
 	}
-	const std::uint32_t generation = scratch.generation;
-	// Sized once here and used through plain pointers below: through the vectors, every access
-	// reloaded the array's address (a virtual call or a store through a double* may have moved
-	// it, as far as the compiler knows).
-	const int runs = (n + SurfaceSamples::kRunLength - 1) / SurfaceSamples::kRunLength;
-	const int groups = (runs + SurfaceSamples::kGroupRuns - 1) / SurfaceSamples::kGroupRuns;
+	generation = scratch.generation;
 	scratch.value.resize(n);
 	scratch.inA.resize(n);
 	scratch.bound.resize(runs);
@@ -384,184 +475,170 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	scratch.scannedRuns.resize(runs);
 	scratch.order.resize(runs);
 	scratch.minima.resize(n);
-	double* const value = scratch.value.data();
-	std::uint32_t* const stamp = scratch.stamp.data();
-	std::uint32_t* const raySolved = scratch.raySolved.data();
-	auto evaluated = [&](int k) { return stamp[k] == generation; };
-	const bool ownLevel = LB == b.SurfaceLevel();
-	Vec2* const inA = scratch.inA.data(); // each evaluated sample in A's body frame
-	auto evaluate = [&](int k) {
-		const Vec2 p = ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB);
-		inA[k] = ToWorld(walk.bInA, p);
-		value[k] = a.Level(inA[k]);
-		stamp[k] = generation;
-		return !std::isnan(value[k]);
-	};
-	// Samples are scanned a run at a time: run g is samples g·kRunLength … (g+1)·kRunLength, its
-	// last sample being the next run's first (sample 0 for the last run).
-	auto runSamples = [&](int g, int& first, int& last) {
-		first = g * SurfaceSamples::kRunLength;
-		last = std::min(first + SurfaceSamples::kRunLength, n);
-	};
-	char* const scanned = scratch.scanned.data(); // per run: evaluated whole
-	int* const scannedRuns = scratch.scannedRuns.data(); // those runs (in increasing order, sorted below)
-	int scannedCount = 0;
-	bool ok = true;
-	bool bounded = ownLevel && int(samples->runCentre.size()) == runs;
+	value = scratch.value.data();
+	stamp = scratch.stamp.data();
+	raySolved = scratch.raySolved.data();
+	inA = scratch.inA.data();
+	scanned = scratch.scanned.data();
+	scannedRuns = scratch.scannedRuns.data();
+	bound = scratch.bound.data();
+	groupBound = scratch.groupBound.data();
+	discs = scratch.discs.data();
+	order = scratch.order.data();
+	minima = scratch.minima.data();
+}
+
+void GridScan::Bound()
+{
+	bounded = ownLevel && boundsA && int(hierarchy.runCentre.size()) == runs;
 	// Groups of runs are bounded first (their discs enclose their runs'), and a run's own disc
-	// only where its group's bound does not already rule it out: about half the bounds of a
-	// heart contact, which were a sixth of its time.
-	bool grouped = bounded && int(samples->groupCentre.size()) == groups;
-	double* const bound = scratch.bound.data();
-	double* const groupBound = scratch.groupBound.data();
+	// only where its group's bound does not already rule it out: about half the bounds.
+	grouped = bounded && int(hierarchy.groupCentre.size()) == groups;
 	const double noBound = -std::numeric_limits<double>::infinity();
-	// Discs are bounded together (Shape::LevelLowerBounds: the heart does two at a time).
-	Vec2* const discs = scratch.discs.data();
-	auto boundDiscs = [&](const std::vector<Vec2>& centres, const std::vector<double>& radii, int first, int last, double* out) {
-		for (int i = first; i < last; ++i)
-			discs[i - first] = ToWorld(walk.bInA, centres[i]);
-		a.LevelLowerBounds(discs, radii.data() + first, last - first, out);
-	};
 	if (grouped)
 	{
-		boundDiscs(samples->groupCentre, samples->groupRadius, 0, groups, groupBound);
+		BoundDiscs(hierarchy.groupCentre, hierarchy.groupRadius, 0, groups, groupBound);
 		for (int G = 0; G < groups && grouped; ++G)
 			grouped = groupBound[G] > noBound; // else bound every run
 	}
 	if (bounded && !grouped)
 	{
-		boundDiscs(samples->runCentre, samples->runRadius, 0, runs, bound);
+		BoundDiscs(hierarchy.runCentre, hierarchy.runRadius, 0, runs, bound);
 		for (int g = 0; g < runs && bounded; ++g)
 			bounded = bound[g] > noBound; // else no bound: scan everything
 	}
-	// Group G's runs: their bounds, each at least the group's (a run's disc lies in its group's),
-	// so that a run without a bound of its own keeps the group's.
-	auto groupRuns = [&](int G, int& first, int& last) {
-		first = G * SurfaceSamples::kGroupRuns;
-		last = std::min(first + SurfaceSamples::kGroupRuns, runs);
-	};
-	auto boundRuns = [&](int G) {
-		int first, last;
-		groupRuns(G, first, last);
-		boundDiscs(samples->runCentre, samples->runRadius, first, last, bound + first);
-		for (int g = first; g < last; ++g)
-			bound[g] = bound[g] > groupBound[G] ? bound[g] : groupBound[G];
-	};
-	if (bounded)
+}
+
+// Run g evaluated whole. Its samples are evaluated together (Shape::Levels: one virtual call a
+// run, not one a sample), but for its end samples where a neighbouring run, scanned, shares
+// them. A NaN stops the scan (reported by Solve).
+void GridScan::ScanRun(int g)
+{
+	scanned[g] = 1;
+	scannedRuns[scannedCount++] = g;
+	int first, last;
+	RunSamples(g, first, last);
+	int end = std::min(last, n - 1); // (sample n is sample 0: done apart below)
+	if (Evaluated(first))
+		++first;
+	if (end >= first && Evaluated(end))
+		--end;
+	for (int k = first; k <= end; ++k)
+		inA[k] = ToWorld(walk.bInA, samples->point[k]);
+	if (end >= first)
+		a.Levels(inA + first, end - first + 1, value + first);
+	bool nan = false; // (one test after the loop, not a branch a sample)
+	for (int k = first; k <= end; ++k)
 	{
-		// Branch and bound over runs: runs in the order of A's lower bound over their discs,
-		// each evaluated whole, until a run's bound exceeds the lowest level found so far. The
-		// skipped runs cannot hold anything lower (the bound covers the curve between the
-		// samples too), so the minima refined below are those of the full scan. The run of the
-		// lowest bound (of the group of the lowest bound, when grouped) goes first; only the
-		// runs whose bound is below the level found there are sorted (sorting all of them was a
-		// tenth of a heart contact), and only the groups whose bound is below it are opened.
-		double lowest = std::numeric_limits<double>::infinity();
-		// A run's samples are evaluated together (Shape::Levels: one virtual call a run, not one
-		// a sample), but for its end samples where a neighbouring run, scanned, shares them.
-		// A NaN stops the scan (reported below).
-		auto scan = [&](int g) {
-			scanned[g] = 1;
-			scannedRuns[scannedCount++] = g;
+		stamp[k] = generation;
+		lowest = std::min(lowest, value[k]);
+		nan |= std::isnan(value[k]);
+	}
+	ok = ok && !nan;
+	if (last == n && ok && !Evaluated(0))
+	{
+		ok = Evaluate(0);
+		lowest = std::min(lowest, value[0]);
+	}
+}
+
+// Branch and bound over runs: runs in the order of A's lower bound over their discs, each
+// evaluated whole, until a run's bound exceeds the lowest level found so far. The skipped runs
+// cannot hold anything lower (the bound covers the curve between the samples too), so the
+// minima refined later are those of the full scan. The run of the lowest bound (of the group of
+// the lowest bound, when grouped) goes first; only the runs whose bound is below the level found
+// there are sorted, and only the groups whose bound is below it are opened.
+void GridScan::Scan()
+{
+	int best = 0, bestGroup = -1;
+	if (grouped)
+	{
+		bestGroup = int(std::min_element(groupBound, groupBound + groups) - groupBound);
+		BoundRuns(bestGroup);
+		int first, last;
+		GroupRuns(bestGroup, first, last);
+		best = int(std::min_element(bound + first, bound + last) - bound);
+	}
+	else
+		best = int(std::min_element(bound, bound + runs) - bound);
+	ScanRun(best);
+	int orderCount = 0;
+	if (grouped)
+	{
+		for (int G = 0; G < groups; ++G)
+		{
+			if (!(groupBound[G] <= lowest))
+				continue;
+			if (G != bestGroup)
+				BoundRuns(G);
 			int first, last;
-			runSamples(g, first, last);
-			int end = std::min(last, n - 1); // (sample n is sample 0: done apart below)
-			if (evaluated(first))
-				++first;
-			if (end >= first && evaluated(end))
-				--end;
-			for (int k = first; k <= end; ++k)
-				inA[k] = ToWorld(walk.bInA, samples->point[k]);
-			if (end >= first)
-				a.Levels(inA + first, end - first + 1, value + first);
-			bool nan = false; // (one test after the loop, not a branch a sample)
-			for (int k = first; k <= end; ++k)
-			{
-				stamp[k] = generation;
-				lowest = std::min(lowest, value[k]);
-				nan |= std::isnan(value[k]);
-			}
-			ok = ok && !nan;
-			if (last == n && ok && !evaluated(0))
-			{
-				ok = evaluate(0);
-				lowest = std::min(lowest, value[0]);
-			}
-		};
-		int best = 0, bestGroup = -1;
-		if (grouped)
-		{
-			bestGroup = int(std::min_element(groupBound, groupBound + groups) - groupBound);
-			boundRuns(bestGroup);
-			int first, last;
-			groupRuns(bestGroup, first, last);
-			best = int(std::min_element(bound + first, bound + last) - bound);
-		}
-		else
-			best = int(std::min_element(bound, bound + runs) - bound);
-		scan(best);
-		std::pair<double, int>* const order = scratch.order.data();
-		int orderCount = 0;
-		if (grouped)
-		{
-			for (int G = 0; G < groups; ++G)
-			{
-				if (!(groupBound[G] <= lowest))
-					continue;
-				if (G != bestGroup)
-					boundRuns(G);
-				int first, last;
-				groupRuns(G, first, last);
-				for (int g = first; g < last; ++g)
-					if (g != best && bound[g] <= lowest)
-						order[orderCount++] = {bound[g], g};
-			}
-		}
-		else
-		{
-			for (int g = 0; g < runs; ++g)
+			GroupRuns(G, first, last);
+			for (int g = first; g < last; ++g)
 				if (g != best && bound[g] <= lowest)
 					order[orderCount++] = {bound[g], g};
-		}
-		std::sort(order, order + orderCount);
-		for (int i = 0; i < orderCount; ++i)
-		{
-			const auto [runBound, g] = order[i];
-			if (runBound > lowest || !ok)
-				break;
-			// A last look with A's tighter bound (where it has one) over the run's box, before
-			// the run's samples.
-			OrientedBox box = samples->runBox[g];
-			box.centre = ToWorld(walk.bInA, box.centre);
-			box.axis = Rotate(walk.bInA.q, box.axis);
-			if (a.TightLevelLowerBound(box) > lowest)
-				continue;
-			scan(g);
 		}
 	}
 	else
 	{
-		for (int k = 0; k < n && ok; ++k)
-			ok = evaluate(k);
-		std::fill(scanned, scanned + runs, char(1));
+		for (int g = 0; g < runs; ++g)
+			if (g != best && bound[g] <= lowest)
+				order[orderCount++] = {bound[g], g};
 	}
-	// Local minima of the cyclic sequence over the scanned runs, lowest first. At the edge of a
-	// skipped run the neighbour is evaluated first, so that the edge is a minimum only if it is
-	// one. Each scanned sample is visited once: a run's last sample belongs to the next run when
-	// that one was scanned too.
-	int* const minima = scratch.minima.data();
-	int minimaCount = 0;
-	auto consider = [&](int k, int before, int after) {
-		if (value[k] <= value[before] && value[k] < value[after])
-			minima[minimaCount++] = k;
-	};
+	std::sort(order, order + orderCount);
+	for (int i = 0; i < orderCount; ++i)
+	{
+		const auto [runBound, g] = order[i];
+		if (runBound > lowest || !ok)
+			break;
+		// A last look with A's tighter bound (where it has one) over the run's box, before the
+		// run's samples.
+		OrientedBox box = hierarchy.runBox[g];
+		box.centre = ToWorld(walk.bInA, box.centre);
+		box.axis = Rotate(walk.bInA.q, box.axis);
+		if (boundsA->TightLevelLowerBound(box) > lowest)
+			continue;
+		ScanRun(g);
+	}
+}
+
+void GridScan::ScanAll()
+{
+	for (int k = 0; k < n && ok; ++k)
+		ok = Evaluate(k);
+	std::fill(scanned, scanned + runs, char(1));
+}
+
+// A scanned run's first or last sample i (n stands for sample 0), whose neighbour may lie in a
+// run not scanned: that neighbour is evaluated only where the sample is below its inside one
+// (else it is no minimum whatever lies outside).
+void GridScan::ConsiderRunEdge(int i)
+{
+	const int k = i == n ? 0 : i;
+	const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
+	if (Evaluated(before) && !(value[k] <= value[before]))
+		return;
+	if (Evaluated(after) && !(value[k] < value[after]))
+		return;
+	if (!Evaluated(before))
+		ok = ok && Evaluate(before); // a NaN stops all evaluation; reported by Solve
+	if (!Evaluated(after))
+		ok = ok && Evaluate(after);
+	Consider(k, before, after);
+}
+
+// Local minima of the cyclic sequence over the scanned runs, lowest first, at most
+// options.gridCandidates of them. At the edge of a skipped run the neighbour is evaluated first,
+// so that the edge is a minimum only if it is one. Each scanned sample is visited once: a run's
+// last sample belongs to the next run when that one was scanned too.
+void GridScan::CollectMinima()
+{
 	if (!bounded && ok && n >= 3)
 	{
 		// Every sample evaluated: plain neighbours, the ends wrapped (same minima, same order).
-		consider(0, n - 1, 1);
+		Consider(0, n - 1, 1);
 		for (int k = 1; k + 1 < n; ++k)
-			consider(k, k - 1, k + 1);
-		consider(n - 1, n - 2, 0);
+			Consider(k, k - 1, k + 1);
+		Consider(n - 1, n - 2, 0);
 	}
 	if (bounded)
 		std::sort(scannedRuns, scannedRuns + scannedCount);
@@ -569,63 +646,44 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	{
 		const int g = scannedRuns[r];
 		int first, last;
-		runSamples(g, first, last);
+		RunSamples(g, first, last);
 		if (scanned[g + 1 == runs ? 0 : g + 1])
 			--last;
 		// Only a run's first and last samples can have a neighbour outside it (in a run not
-		// scanned); those in between compare with their own run's samples. The outside one is
-		// evaluated only where the sample is below its inside one (else it is no minimum
-		// whatever lies outside: 0.07 evaluations a heart contact where there were 2.35).
-		auto edge = [&](int i) {
-			const int k = i == n ? 0 : i;
-			const int before = k == 0 ? n - 1 : k - 1, after = k == n - 1 ? 0 : k + 1;
-			if (evaluated(before) && !(value[k] <= value[before]))
-				return;
-			if (evaluated(after) && !(value[k] < value[after]))
-				return;
-			if (!evaluated(before))
-				ok = ok && evaluate(before); // a NaN stops all evaluation; reported below
-			if (!evaluated(after))
-				ok = ok && evaluate(after);
-			consider(k, before, after);
-		};
+		// scanned); those in between compare with their own run's samples.
 		const int inner = std::min(last, n - 1); // i + 1 ≤ n − 1 below: no wrap
-		edge(first);
+		ConsiderRunEdge(first);
 		for (int i = first + 1; i < inner; ++i)
-			consider(i, i - 1, i + 1);
+			Consider(i, i - 1, i + 1);
 		for (int i = std::max(first + 1, inner); i <= last; ++i)
-			edge(i);
+			ConsiderRunEdge(i);
 	}
 	if (!ok)
-	{
-		result.failure = "grid: a level value is NaN (check the shape functions)";
-		return result;
-	}
+		return;
 	if (minimaCount == 0)
 	{
 		int lowestSample = -1;
 		for (int k = 0; k < n; ++k)
-			if (evaluated(k) && (lowestSample < 0 || value[k] < value[lowestSample]))
+			if (Evaluated(k) && (lowestSample < 0 || value[k] < value[lowestSample]))
 				lowestSample = k;
 		minima[minimaCount++] = lowestSample;
 	}
 	std::sort(minima, minima + minimaCount, [&](int i, int j) { return value[i] < value[j] || (value[i] == value[j] && i < j); });
 	minimaCount = std::min(minimaCount, std::max(1, options.gridCandidates));
+}
 
-	auto samplePoint = [&](int k) { return ownLevel ? samples->point[k] : b.SurfacePoint(samples->angle[k], LB); };
+// The candidates refined between their neighbours (RefineCandidate), the lowest answer kept.
+void GridScan::RefineMinima(double& bestValue, Vec2& bestPoint)
+{
+	auto samplePoint = [&](int k) { return SamplePoint(k); };
 	auto markSolved = [&](int i) { raySolved[i] = generation; };
-	// The disc holding B's curve between two consecutive samples p and q (A's frame), by the run
-	// discs' rule: half the chord and twice the curve's measured deviation from it. A's lower
-	// bound over it rules the arc out (the later candidates below, the corner-ray pass after).
-	const double deviationMargin = 2.0 * samples->maxDeviation;
-	auto segmentRadius = [&](Vec2 p, Vec2 q) { return 0.5 * Distance(p, q) + deviationMargin; };
-	double bestValue = value[minima[0]];
-	Vec2 bestPoint = samplePoint(minima[0]);
+	bestValue = value[minima[0]];
+	bestPoint = SamplePoint(minima[0]);
 	for (int m = 0; m < minimaCount; ++m)
 	{
 		const int k = minima[m];
 		double v = value[k];
-		Vec2 point = samplePoint(k);
+		Vec2 point = SamplePoint(k);
 		if (options.gridRefine)
 		{
 			// (The neighbours of a local minimum of the samples were evaluated; those of the
@@ -638,15 +696,15 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 				// the best level refined so far is not refined: the discs of its two sample
 				// segments bound everything the refinement could find there.
 				const Vec2 centres[2] = {0.5 * (inA[before] + inA[k]), 0.5 * (inA[k] + inA[after])};
-				const double radii[2] = {segmentRadius(inA[before], inA[k]), segmentRadius(inA[k], inA[after])};
+				const double radii[2] = {SegmentRadius(inA[before], inA[k]), SegmentRadius(inA[k], inA[after])};
 				double bounds[2];
-				a.LevelLowerBounds(centres, radii, 2, bounds);
+				boundsA->LevelLowerBounds(centres, radii, 2, bounds);
 				if (bounds[0] > bestValue && bounds[1] > bestValue)
 					continue;
 			}
 			const double nan = std::numeric_limits<double>::quiet_NaN();
-			RefineCandidate(walk, *samples, k, samplePoint, markSolved, evaluated(before) ? value[before] : nan,
-			                evaluated(after) ? value[after] : nan, v, point);
+			RefineCandidate(walk, *samples, k, samplePoint, markSolved, Evaluated(before) ? value[before] : nan,
+			                Evaluated(after) ? value[after] : nan, v, point);
 		}
 		if (v < bestValue)
 		{
@@ -654,39 +712,62 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 			bestPoint = point;
 		}
 	}
-	if (options.gridRefine && !a.CornerAngles().empty())
+}
+
+// Where B's curve crosses one of A's corner rays, A's level has a V-shaped valley (the heart's
+// tip): a minimum between two samples that the samples need not show as one, when the valley
+// lies on the slope of a smooth basin. Each crossing between two scanned samples is solved for
+// (the skipped runs' bounds cover their valleys), unless A's lower bound over the disc holding
+// that arc of B's curve is above the best level already; only runs whose disc reaches a ray are
+// searched.
+void GridScan::CornerRayPass(double& bestValue, Vec2& bestPoint)
+{
+	const std::vector<Vec2>& rays = a.CornerDirections();
+	auto reaches = [&](Vec2 c, double r) {
+		for (const Vec2 u : rays)
+			if (std::fabs(Cross(u, c)) <= r && Dot(u, c) >= -r)
+				return true;
+		return false;
+	};
+	for (int r = 0, count = bounded ? scannedCount : runs; r < count; ++r)
 	{
-		// Where B's curve crosses one of A's corner rays, A's level has a V-shaped valley (the
-		// heart's tip): a minimum between two samples that the samples need not show as one,
-		// when the valley lies on the slope of a smooth basin. Each crossing between two
-		// scanned samples is solved for (the skipped runs' bounds cover their valleys), unless
-		// A's lower bound over the disc holding that arc of B's curve (the run discs' rule)
-		// is above the best level already; only runs whose disc reaches a ray are searched.
-		const std::vector<Vec2>& rays = a.CornerDirections();
-		auto reaches = [&](Vec2 c, double r) {
-			for (const Vec2 u : rays)
-				if (std::fabs(Cross(u, c)) <= r && Dot(u, c) >= -r)
-					return true;
-			return false;
-		};
-		for (int r = 0, count = bounded ? scannedCount : runs; r < count; ++r)
+		const int g = bounded ? scannedRuns[r] : r;
+		if (bounded && !reaches(ToWorld(walk.bInA, hierarchy.runCentre[g]), hierarchy.runRadius[g]))
+			continue;
+		int first, last;
+		RunSamples(g, first, last);
+		for (int i = first; i < last; ++i)
 		{
-			const int g = bounded ? scannedRuns[r] : r;
-			if (bounded && !reaches(ToWorld(walk.bInA, samples->runCentre[g]), samples->runRadius[g]))
-				continue;
-			int first, last;
-			runSamples(g, first, last);
-			for (int i = first; i < last; ++i)
-			{
-				const Vec2 p = inA[i], q = inA[i + 1 == n ? 0 : i + 1];
-				if (!MeetsCornerRay(a, p, q) || raySolved[i] == generation)
-					continue; // (no ray here, or solved by the refinement)
-				// (CornerRayCrossing tries every corner ray.)
-				if (!bounded || !(a.LevelLowerBound(0.5 * (p + q), segmentRadius(p, q)) > bestValue))
-					CornerRayCrossing(walk, p, q, bestValue, bestPoint);
-			}
+			const Vec2 p = inA[i], q = inA[i + 1 == n ? 0 : i + 1];
+			if (!MeetsCornerRay(a, p, q) || raySolved[i] == generation)
+				continue; // (no ray here, or solved by the refinement)
+			// (CornerRayCrossing tries every corner ray.)
+			if (!bounded || !(boundsA->LevelLowerBound(0.5 * (p + q), SegmentRadius(p, q)) > bestValue))
+				CornerRayCrossing(walk, p, q, bestValue, bestPoint);
 		}
 	}
+}
+
+LevelResult GridScan::Solve(Vec2* bodyGradientA)
+{
+	LevelResult result;
+	result.method = SolveMethod::grid;
+	Bound();
+	if (bounded)
+		Scan();
+	else
+		ScanAll();
+	CollectMinima();
+	if (!ok)
+	{
+		result.failure = "grid: a level value is NaN (check the shape functions)";
+		return result;
+	}
+	double bestValue;
+	Vec2 bestPoint;
+	RefineMinima(bestValue, bestPoint);
+	if (options.gridRefine && !a.CornerAngles().empty())
+		CornerRayPass(bestValue, bestPoint);
 	if (!std::isfinite(bestValue))
 	{
 		result.failure = "grid: no finite level of A on B's surface";
@@ -705,6 +786,19 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
 	result.normal = Normalize(normal);
 	result.iterations = walk.evaluations;
 	return result;
+}
+} // namespace
+
+LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                           double levelB)
+{
+	return SolveGridScale(a, pa, b, pb, options, levelB, nullptr);
+}
+
+LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                           double levelB, Vec2* bodyGradientA)
+{
+	return GridScan(a, pa, b, pb, options, levelB).Solve(bodyGradientA);
 }
 
 LevelResult SolveCommonLevelGrid(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)

@@ -117,4 +117,28 @@ private:
 	PairEntry<LevelFn> m_level[K][K] = {};
 };
 
+/// A column of the table for a kind of geometry that has no shape kind (the 2D table's polygons
+/// and segments, Box2D's plain shapes): one function per shape kind, the same default for every
+/// kind until one is registered for it. constexpr, lock-free reads and set-up writes, as
+/// PairTable.
+template <typename Function>
+class KindColumn
+{
+public:
+	/// A column whose every kind has `byDefault`.
+	constexpr explicit KindColumn(Function byDefault) : m_default(byDefault) {}
+	/// The function for `kind`.
+	Function At(ShapeKind kind) const
+	{
+		const Function f = m_entries[kind.Id()];
+		return f ? f : m_default;
+	}
+	/// Register `f` for `kind`.
+	constexpr void Set(ShapeKind kind, Function f) { m_entries[kind.Id()] = f; }
+
+private:
+	Function m_default;
+	Function m_entries[ShapeKind::kMaxKinds] = {};
+};
+
 } // namespace b2a

@@ -12,7 +12,7 @@
 namespace b2a
 {
 
-ContactResult ComputePolygonContact(const Shape& a, const Pose& pa, const Vec2* vertices, int count, const Pose& pb,
+ContactResult SeparatingAxisContact(const Shape& a, const Pose& pa, const Vec2* vertices, int count, const Pose& pb,
                                     const Vec2* guessNormal)
 {
 	ContactResult c;

@@ -57,7 +57,8 @@ bool CrossingByCurvature(const Shape& shape, Vec2 x, Vec2 u, double f0, double p
 	if (!(end > 0.0 && end <= sMax))
 		return false;
 	double lo, hi;
-	if (!shape.CurvatureBounds(x + (0.5 * end) * u, 0.5 * end * len, lo, hi) || !(lo > 0.0))
+	const LevelBounds* bounds = shape.Bounds();
+	if (!bounds || !bounds->CurvatureBounds(x + (0.5 * end) * u, 0.5 * end * len, lo, hi) || !(lo > 0.0))
 		return false;
 	// The root of f0 + p s + (c/2) s² nearest 0, in the form without cancellation; none (NaN)
 	// where the discriminant is negative.
@@ -175,12 +176,14 @@ double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Ve
 	const double h = std::min(sMax / 64.0, 0.5 * shape.SamplesRef().maxSpacing / std::max(len, 1e-300));
 	const bool inside = f0 < 0.0;
 	auto middle = [&](double from, double to) { return ToBody(pose, X + (0.5 * (from + to)) * dir); };
+	const LevelBounds* const bounds = shape.Bounds();
 	auto clear = [&](double from, double to) {
 		const Vec2 c = middle(from, to);
 		const double rho = 0.5 * (to - from) * len;
-		return inside ? shape.LevelUpperBound(c, rho) < own : shape.LevelLowerBound(c, rho) > own;
+		return inside ? bounds->LevelUpperBound(c, rho) < own : bounds->LevelLowerBound(c, rho) > own;
 	};
-	const bool bounded = std::isfinite(inside ? shape.LevelUpperBound(ToBody(pose, X), 0.0) : shape.LevelLowerBound(ToBody(pose, X), 0.0));
+	const bool bounded =
+		bounds && std::isfinite(inside ? bounds->LevelUpperBound(ToBody(pose, X), 0.0) : bounds->LevelLowerBound(ToBody(pose, X), 0.0));
 	// A crossing pair thinner than the step forms only at a corner (a heart's tip: the
 	// surface there is a cusp); elsewhere the step is fine enough, as for the plain march.
 	const std::vector<Vec2>& corners = shape.CornerPoints();

@@ -93,10 +93,9 @@ void HeartShape::Levels(const Vec2* x, int count, double* out) const
 	// the two lanes of SSE2 registers, so that each lane's value is Level's bit for bit (the
 	// cube root, a table cell and a polynomial, is the level's cost, and its arithmetic runs
 	// two lanes at a time). Pairs with a cube root outside CubeRoot's main range (0, NaN,
-	// infinities) take the scalar path. (Four AVX2 lanes, here and in LevelLowerBounds, bit for
-	// bit the same with gathered table cells, were 1.8 and 2.1 times as fast on runs alone but
-	// left a heart contact's time where it was, on 2026-12-05's EPYC: the contact waits on
-	// other work, not on these evaluations.)
+	// infinities) take the scalar path. (Four AVX2 lanes, here and in LevelLowerBounds, would
+	// give the same bits with gathered table cells, but a contact waits on other work, not on
+	// these evaluations: faster runs alone do not make a faster contact.)
 	static_assert(sizeof(Vec2) == 2 * sizeof(double), "Vec2 is two packed doubles");
 	const __m128d lowest = _mm_set1_pd(kCubeRootLowest), highest = _mm_set1_pd(kCubeRootHighest);
 	for (; i + 2 <= count; i += 2)
@@ -149,8 +148,8 @@ double HeartShape::LevelLowerBound(Vec2 centre, double radius) const
 {
 	// Over |x − c| ≤ ρ: |x|² ≥ (|c| − ρ)₊², the exact least |x|² on the disc, taken a rounding
 	// lower (1e-15 of |c|) so that it stays a bound. (Per component, dx² + dy² with
-	// d = (|c| − ρ)₊ per axis, was looser by up to 2ρ(|cx| + |cy| − |c|), and the grid scanned
-	// more runs with it: 2 % of a heart contact.) The cusp term −|x|^{2/3} y ≥
+	// d = (|c| − ρ)₊ per axis, is looser by up to 2ρ(|cx| + |cy| − |c|), and the grid would
+	// scan more runs.) The cusp term −|x|^{2/3} y ≥
 	// −(|cx| + ρ)^{2/3} (cy + ρ) where the disc reaches y > 0, and where it lies below the x
 	// axis it adds at least dx^{2/3} |cy + ρ| with dx = (|cx| − ρ)₊.
 	// (The cube root by its bounds: the upper one where the term is subtracted, the lower one
@@ -222,9 +221,8 @@ double HeartShape::TightLevelLowerBound(const OrientedBox& box) const
 	// interval's least of g s + (m/2) s²: −|g|l + (m/2)l² where |g| ≥ ml (always for m ≤ 0),
 	// and at least −|g|l otherwise. Along a run of samples near the least level the curve
 	// runs along A's level set, the gradient lies across the box, and the box's thinness
-	// counts: of the runs a heart–heart grid solve of b2a_bench_pairs looks at after its first,
-	// this rules out nearly twice as many as the same bound over the run's disc did (1.39 of
-	// 3.24 a solve, where the disc's ruled out 0.72).
+	// counts: this rules out about twice as many of the runs a grid solve looks at after its
+	// first as the same bound over the run's disc (the benchmark notes give the counts).
 	// The cube roots within 2e-8 and k 1e-6 high (CubeRootsOverDisc): the answer is lowered by
 	// 1e-6 of the sum of its terms' sizes (the gradient's by its components').
 	const Vec2 centre = box.centre;

@@ -90,7 +90,7 @@ void Shape::Levels(const Vec2* x, int count, double* out) const
 		out[i] = Level(x[i]);
 }
 
-void Shape::LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const
+void LevelBounds::LevelLowerBounds(const Vec2* centres, const double* radii, int count, double* out) const
 {
 	for (int i = 0; i < count; ++i)
 		out[i] = LevelLowerBound(centres[i], radii[i]);
@@ -244,7 +244,7 @@ void DenseSamples(const Shape& shape, int resolution, std::vector<DensePoint>& d
 			// Turned by more than turnMax: a test on the cross and dot products, without atan2.
 			const Vec2 in = pm - task.p0, out = task.p1 - pm;
 			const double along = Dot(in, out), across = std::fabs(Cross(in, out));
-			// (Turned back, along < 0, counts; a zero or non-finite chord does not, as before.)
+			// (Turned back, along < 0, counts; a zero or non-finite chord does not.)
 			const bool turning = along < 0.0 || across > tanTurnMax * along;
 			if ((longChord || turning) && task.depth < 40)
 			{
@@ -284,8 +284,8 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 	const double L = m_surfaceLevel;
 	// 1. Dense adaptive polar sampling: split an angle interval while its chord is long or
 	//    the chord direction turns, so thin tips and cusps are resolved.
-	//    Below 32 samples (a proxy's 7) a pass for 32; from 32 up the default's, as before (the
-	//    grid method's samples, whose accuracy the benchmarks report, stay as they were).
+	//    Below 32 samples (a proxy's 7) a pass for 32, which needs no finer polyline; from 32 up
+	//    the default's, whose resolution the grid method's samples are spread along.
 	const int resolution = count < 32 ? 32 : kDefaultSampleCount;
 	DenseCache& cache = t_denseCache;
 	if (cache.serial != m_serial || cache.resolution != resolution)
@@ -360,7 +360,8 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 
 	// 3. Spacing and the measured deviation of the true curve from the sample polygon.
 	const int n = out->Count();
-	std::vector<double> deviation(size_t(n), 0.0); // of arc k → k + 1
+	std::vector<double>& deviation = out->arcDeviation; // of arc k → k + 1
+	deviation.assign(size_t(n), 0.0);
 	for (int k = 0; k < n; ++k)
 	{
 		const int j = (k + 1) % n;
@@ -373,76 +374,6 @@ std::shared_ptr<const SurfaceSamples> Shape::Samples(int count) const
 			deviation[size_t(k)] = std::max(deviation[size_t(k)], DistanceToSegment(mid, out->point[k], out->point[j]));
 		}
 		out->maxDeviation = std::max(out->maxDeviation, deviation[size_t(k)]);
-	}
-	// 4. Run discs: the centre of the run's sample box, the radius to its farthest sample plus
-	//    twice the deviation of the curve from the sample polygon.
-	for (int first = 0; first < n; first += SurfaceSamples::kRunLength)
-	{
-		const int last = std::min(first + SurfaceSamples::kRunLength, n); // sample index, mod n
-		Vec2 lower = out->point[first], upper = lower;
-		for (int k = first + 1; k <= last; ++k)
-		{
-			const Vec2 p = out->point[k % n];
-			lower = Vec2(std::min(lower.x, p.x), std::min(lower.y, p.y));
-			upper = Vec2(std::max(upper.x, p.x), std::max(upper.y, p.y));
-		}
-		const Vec2 centre = 0.5 * (lower + upper);
-		double radius = 0.0;
-		for (int k = first; k <= last; ++k)
-			radius = std::max(radius, Distance(centre, out->point[k % n]));
-		out->runCentre.push_back(centre);
-		out->runRadius.push_back(radius + 2.0 * out->maxDeviation);
-		// The box along the chord: the samples' extents along it and across it, widened on
-		// every side by twice the largest deviation measured on the run's own arcs (the curve
-		// keeps within it of the sample polygon, which the samples' box holds whatever its
-		// orientation; the shape's largest, the discs' margin, is the heart's cusp's, and
-		// taken for every run it made the heart's boxes four times as wide).
-		// (Plus the points' rounding: a straight run measures no deviation.)
-		double runDeviation = 0.0, farthest = 0.0;
-		for (int k = first; k < last; ++k)
-		{
-			runDeviation = std::max(runDeviation, deviation[size_t(k)]);
-			farthest = std::max(farthest, Length(out->point[k]));
-		}
-		runDeviation += 1e-14 * farthest;
-		const Vec2 start = out->point[first], chord = out->point[last % n] - start;
-		const Vec2 axis = LengthSquared(chord) > 0.0 ? Normalize(chord) : Vec2(1.0, 0.0), across(-axis.y, axis.x);
-		double alongLow = 0.0, alongHigh = 0.0, acrossLow = 0.0, acrossHigh = 0.0;
-		for (int k = first + 1; k <= last; ++k)
-		{
-			const Vec2 d = out->point[k % n] - start;
-			alongLow = std::min(alongLow, Dot(d, axis));
-			alongHigh = std::max(alongHigh, Dot(d, axis));
-			acrossLow = std::min(acrossLow, Dot(d, across));
-			acrossHigh = std::max(acrossHigh, Dot(d, across));
-		}
-		OrientedBox box;
-		box.axis = axis;
-		box.centre = start + (0.5 * (alongLow + alongHigh)) * axis + (0.5 * (acrossLow + acrossHigh)) * across;
-		box.halfLength = 0.5 * (alongHigh - alongLow) + 2.0 * runDeviation;
-		box.halfWidth = 0.5 * (acrossHigh - acrossLow) + 2.0 * runDeviation;
-		out->runBox.push_back(box);
-	}
-	// 5. Group discs: the centre of the box of the group's run discs, the radius reaching the
-	//    farthest edge of any of them.
-	const int runs = int(out->runCentre.size());
-	for (int first = 0; first < runs; first += SurfaceSamples::kGroupRuns)
-	{
-		const int last = std::min(first + SurfaceSamples::kGroupRuns, runs);
-		Vec2 lower = out->runCentre[first], upper = lower;
-		for (int g = first; g < last; ++g)
-		{
-			const Vec2 c = out->runCentre[g];
-			const double r = out->runRadius[g];
-			lower = Vec2(std::min(lower.x, c.x - r), std::min(lower.y, c.y - r));
-			upper = Vec2(std::max(upper.x, c.x + r), std::max(upper.y, c.y + r));
-		}
-		const Vec2 centre = 0.5 * (lower + upper);
-		double radius = 0.0;
-		for (int g = first; g < last; ++g)
-			radius = std::max(radius, Distance(centre, out->runCentre[g]) + out->runRadius[g]);
-		out->groupCentre.push_back(centre);
-		out->groupRadius.push_back(radius);
 	}
 	m_samples.emplace_back(count, out);
 	return out;

@@ -353,7 +353,7 @@ Vec2 SuperellipseShape::SupportNear(Vec2 d, int lagrangeSteps) const
 		}
 		// e is divided by its larger component, so that component's power is exactly 1 (no pow),
 		// and ‖e‖_q^{q−1} = (Σ|e_i|^q)^{1/p} is a root RootOf takes by square roots for p = 8:
-		// one pow where there were three (the three were 7 % of a cold n = 8 contact's instructions).
+		// one pow, not three.
 		const double q = p / (p - 1.0);
 		const double ax = std::fabs(e.x), ay = std::fabs(e.y);
 		const double px = ax == 1.0 ? 1.0 : std::pow(ax, q - 1.0), py = ay == 1.0 ? 1.0 : std::pow(ay, q - 1.0);
