@@ -327,11 +327,13 @@ TEST_CASE("stress (known failure): the grid scale of a small heart against a lar
 	}
 }
 
-TEST_CASE("stress (known failure): the automatic common level of 1000:1 needles is as exact as Newton's" *
-          doctest::should_fail())
+TEST_CASE("stress: the automatic common level of 1000:1 needles is as exact as Newton's")
 {
-	// When Newton fails the min–max answer is polished by Newton; where that polish fails too the
-	// raw min–max answer is returned, and it can be far off.
+	// Newton hit its iteration cap here and so did the Newton polish of the min–max answer, and
+	// the raw min–max answer was returned as converged, 0.21 and 1.4 rad off in its normal. The
+	// raw answer is now returned only where it meets the solvers' standard (ConditionsHold); here
+	// the polish converges: Jacobians that only the units made look singular are solved
+	// (BorderedCurvature), and the inner minimisation of the min–max reaches its minimiser.
 	for (const Pair& p : MinMaxPairs())
 	{
 		INFO(std::string(p.name));
