@@ -358,3 +358,45 @@ TEST_CASE("stress (known failure): nearly concentric high-exponent particles get
 	CHECK(SolveCommonLevel(*a, pa, *b, pb).Ok());
 	CHECK(ComputeContact(*a, pa, *b, pb).Ok());
 }
+
+TEST_CASE("stress: a small heart beside a long plank gets the side that measures its gap")
+{
+	// Configuration 954351 of the seed-1 million-pair run: a heart of size 0.26 beside a 100 ×
+	// 0.18 plank (n = 20), 0.26 apart. The grid rescales the heart onto the plank's samples (0.8
+	// apart along it) and finds the farther lobe (level 0.166, not 0.075); its contact's line
+	// crosses the plank behind the point, so its separation was measured negative and set to the
+	// least double to agree with the verdict, and as the "nearer" of the two sides it won: the
+	// normal came back reversed with a separation of 5e-324. A separation set that way now loses
+	// to the other side's measurement. Reference: the dense one-sided scale of the heart onto the
+	// plank (SurfaceMin), whose normal (the heart's gradient there) is the direction from the heart
+	// to the plank; the pair and its neighbours (the heart 20 % smaller or larger, moved by 0.03).
+	const double alpha = 0.0070753377435844979;
+	const double pa = 50.217406735612784, pb = 0.087774320784963958;
+	const auto plank = MakeSuperellipse(pa, pb, 20.0, 20.0);
+	const Pose plankPose(Vec2(16.844012172522742, 42.18564362946767), -1.9707971791366008);
+	const ref::RefShape refPlank = ref::RefShape::Super(pa, pb, 20.0L, 20.0L);
+	for (const double scale : {1.0, 0.8, 1.25})
+		for (const Vec2 shift : {Vec2(), Vec2(0.03, 0.0), Vec2(0.0, -0.03)})
+		{
+			const double al = alpha * scale * scale;
+			const auto heart = MakeHeart(al);
+			const Pose heartPose(Vec2(-0.24587679304906673, 0.22733982644232081) + shift, 0.43485901365236046);
+			INFO("heart size x" << scale << ", moved by (" << shift.x << ", " << shift.y << ")");
+			const ref::SurfaceMinResult m =
+				ref::SurfaceMin(ref::RefShape::Heart(al), ref::Of(heartPose), refPlank, ref::Of(plankPose), refPlank.Own(), 8192, 8);
+			REQUIRE(double(m.value) > 2.0 * al); // apart, by a clear margin
+			const V towardsPlank = ref::Unit(ref::WorldDeriv(ref::RefShape::Heart(al), ref::Of(heartPose), m.point).grad);
+			const ContactResult c = ComputeContact(*heart, heartPose, *plank, plankPose);
+			REQUIRE(c.Ok());
+			CHECK(!c.touching);
+			CHECK(c.separation > 0.1);
+			// The contact's side may be the plank's (rescaled onto the heart): its normal is then
+			// the heart's own at the touching point, within a few 1e-4 rad of the reference's.
+			CHECK(double(ref::Dot(ref::FromVec(c.normal), towardsPlank)) > std::cos(0.01));
+		}
+	// The configuration itself, against the answer it was built for (level 0.0751 of the heart's
+	// α, normal (−0.92095, 0.38968)): the reference finds it.
+	const ref::SurfaceMinResult m = ref::SurfaceMin(ref::RefShape::Heart(alpha), ref::Of(Pose(Vec2(-0.24587679304906673, 0.22733982644232081), 0.43485901365236046)),
+	                                                refPlank, ref::Of(plankPose), refPlank.Own(), 8192, 8);
+	CHECK(double(m.value) == doctest::Approx(0.07506902241068425).epsilon(1e-9));
+}
