@@ -383,10 +383,10 @@ TEST_CASE("superellipse pairs: on hard pairs the fast path is never less accurat
 		const ContactResult generic = ConvexContact(*p.a, p.pa, *p.b, p.pb, {}, nullptr);
 		if (!fast.Ok())
 		{
-			// Only where no path has an answer that meets the standard: two needles crossing
-			// deep inside each other, the common level far below 1e-12 (4e-31), where the
-			// rounding of the coordinates leaves the levels' mismatch unresolved (one pair in
-			// 3000; it was returned as converged with its normals 0.06 rad apart).
+			// Only where no path has an answer that meets the standard and the particles do not
+			// overlap (where they do, the contact is the axis of least overlap): the level solve
+			// fails, with a reason, for two needles crossing deep inside each other at a level of
+			// 4e-31, which came back converged with its normals 0.06 rad apart.
 			INFO(p.a->Describe() << " vs " << p.b->Describe() << ": " << std::string(fast.failure));
 			CHECK(!generic.Ok());
 			const ref::CommonLevelResult want = ref::CommonLevelRef(RefOf(*p.a), ref::Of(p.pa), RefOf(*p.b), ref::Of(p.pb));

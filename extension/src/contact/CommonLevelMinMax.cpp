@@ -164,7 +164,7 @@ LevelResult SolveCommonLevelMinMax(const Shape& a, const Pose& pa, const Shape& 
 	// bracket each stop at their own tolerances, which a needle's levels do not see).
 	const GaugeValue a2 = f.Eval(f.a, xi, true), b2 = f.Eval(f.b, xi, true);
 	const double reach = std::max({Length(f.World(xi)), Length(pa.p), Length(pb.p)});
-	if (!ConditionsHold(a2.psi, b2.psi, a2.grad, b2.grad, a2.hess, b2.hess, std::numeric_limits<double>::epsilon() * reach / f.scale))
+	if (!ConditionsHold(a2.psi, b2.psi, a2.grad, b2.grad, a2.hess, b2.hess, std::numeric_limits<double>::epsilon() * reach / f.scale, f.power))
 	{
 		result.failure = "min-max: stopped short of a solution (its levels or normals disagree beyond rounding)";
 		return result;

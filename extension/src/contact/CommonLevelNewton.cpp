@@ -132,7 +132,7 @@ bool Solved(const PairFrame& f, const NewtonPoint& p)
 {
 	if (ConditionsWithin(p.A.psi, p.B.psi, p.A.grad, p.B.grad, 1e-11, 1e-11))
 		return true; // (the common case, before the roots of the reach)
-	return ResidualAt(f, p).Within(1e-11, 1e-10);
+	return ResidualAt(f, p).Within(1e-11, 1e-10, f.power);
 }
 
 // The answer at the solved point: a solution has opposed gradients (a point where both gradients
@@ -225,7 +225,7 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 			// of its length, and at a sharp tip the normals' rounding may swamp the residual
 			// while the levels still differ. Taken twice at most, and the point then tested as
 			// any other.
-			if (!(forced < 2 && ResidualAt(f, p).Within(1e-4, 1e-4)))
+			if (!(forced < 2 && ResidualAt(f, p).Within(1e-4, 1e-4, f.power)))
 			{
 				result.failure = "line search stalled (no step lowers the residual)";
 				return result;
@@ -246,10 +246,10 @@ LevelResult RunNewton(const PairFrame& f, Vec2 xi, double m, const SolverOptions
 		// (with a factor 10 of margin) the step that would confirm it is taken without its
 		// evaluation: a warm start then takes two evaluations after the first instead of three.
 		// The estimate needs a contraction (|δ₂| < |δ₁|/4), so a slow or erratic approach is
-		// never cut short, and the point near the solution (NearSolution: the contraction alone
-		// can mislead).
-		if (full && previousMoved > 0.0 && moved < 0.25 * previousMoved &&
-		    NearSolution(current->A.psi, current->B.psi, current->A.grad, current->B.grad))
+		// never cut short, and the relative residual already 1e-6 (the contraction alone can
+		// mislead: between a needle and a larger particle the steps contract by 1e4 where the
+		// levels still differ by a factor 2).
+		if (full && previousMoved > 0.0 && moved < 0.25 * previousMoved && current->relative <= 1e-6)
 		{
 			const double K = moved / (previousMoved * previousMoved);
 			lastStep = 10.0 * K * moved * moved <= options.stepTolerance;

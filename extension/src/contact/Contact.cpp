@@ -454,7 +454,13 @@ ContactResult ConvexContact(const Shape& a, const Pose& pa, const Shape& b, cons
 		return OverlapAxisContact(a, pa, b, pb);
 	const LevelResult level = SolveCommonLevel(a, pa, b, pb, MethodChoice::automatic, options, warm);
 	if (!level.Ok())
-		return Failed(level);
+	{
+		// No level meets the solvers' standard (needles crossing deep inside each other, levels
+		// of 1e-12 and below): where the particles overlap, the axis of least overlap still
+		// separates them, as for coincident centres.
+		const ContactResult axis = OverlapAxisContact(a, pa, b, pb);
+		return axis.touching ? axis : Failed(level);
+	}
 	return ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
 }
 

@@ -472,7 +472,7 @@ bool EllipseConditionsHold(const EllipsePair& e, const Pose& pa, const Pose& pb,
 		return true;
 	const double reach = std::max({Length(ans.point), Length(pa.p), Length(pb.p)});
 	return ConditionsHold(ans.lamA, ans.lamB, 2.0 * ans.gA, 2.0 * ans.gB, 2.0 * e.MA, 2.0 * e.MB,
-	                      std::numeric_limits<double>::epsilon() * reach);
+	                      std::numeric_limits<double>::epsilon() * reach, 1.0);
 }
 } // namespace
 

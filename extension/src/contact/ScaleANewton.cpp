@@ -66,7 +66,7 @@ bool ScaleSolved(const PairFrame& f, const Point& p, double psiB0)
 	r.angle = std::fabs(p.F1);
 	r.angleFloor = (std::fabs(Dot(t, p.A.hess * t)) / ga + std::fabs(Dot(t, p.B.hess * t)) / gb) * delta + 4.0 * eps;
 	r.valid = std::isfinite(r.level + r.levelFloor + r.angle + r.angleFloor);
-	return r.Within(1e-11, 1e-10);
+	return r.Within(1e-11, 1e-10, f.power);
 }
 
 LevelResult RunScaleNewton(const PairFrame& f, Vec2 xi, double trust, const SolverOptions& options)

@@ -58,13 +58,13 @@ inline bool ConditionsWithin(double levelA, double levelB, Vec2 gradA, Vec2 grad
 
 /// Whether a point lies where Newton's steps may be trusted to converge quadratically, so that a
 /// step which the previous steps' contraction shows to be the last may be taken unevaluated: the
-/// levels within 1e-6 of each other and the normals within 1e-3 rad of opposed. Between a needle
+/// levels within 1e-6 of each other and the normals within 1e-5 rad of opposed. Between a needle
 /// and a larger particle the steps contract by 1e4 where the levels still differ by a factor 2
 /// (the needle's gradient, ~1/thickness, makes every step small); a needle's normal turns fast
-/// with the point (1e-6 rad at a step of 1e-11 of the size), so its test is looser.
+/// with the point (2e-6 rad at a step of 3e-11 of the size), so its test is looser.
 inline bool NearSolution(double levelA, double levelB, Vec2 gradA, Vec2 gradB)
 {
-	return ConditionsWithin(levelA, levelB, gradA, gradB, 1e-6, 1e-3);
+	return ConditionsWithin(levelA, levelB, gradA, gradB, 1e-6, 1e-5);
 }
 
 /// How far a point is from solving the common-level conditions, measured on the conditions
@@ -79,10 +79,16 @@ struct ConditionsResidual
 	double level = 0.0, levelFloor = 0.0; ///< relative mismatch of the levels, and its rounding
 	double angle = 0.0, angleFloor = 0.0; ///< misalignment of the normals (radians), and its rounding
 	bool valid = false;                   ///< false: a gradient vanishes or is not finite
-	/// Both parts within `tolerance`, or within ten times their rounding.
-	bool Within(double levelTolerance, double angleTolerance) const
+	/// Both parts within their tolerance, or within ten times their rounding, but never beyond
+	/// the level a converged answer is held to (1e-9 of itself: the gauges to 1e-9/q, `power` =
+	/// q), nor normals misaligned beyond 1e-4 rad: a candidate at a sharp tip would otherwise
+	/// excuse itself by its own curvature. (Between 1e-6 and 1e-4 the rounding of one particle's
+	/// normal at a needle's tip can exceed the standard while the other's, the level solve's
+	/// normal, is exact.)
+	bool Within(double levelTolerance, double angleTolerance, double power) const
 	{
-		return valid && level <= std::max(levelTolerance, 10.0 * levelFloor) && angle <= std::max(angleTolerance, 10.0 * angleFloor);
+		return valid && level <= std::max(levelTolerance, std::min(10.0 * levelFloor, 1e-9 / power)) &&
+		       angle <= std::max(angleTolerance, std::min(10.0 * angleFloor, 1e-4));
 	}
 };
 inline ConditionsResidual ResidualOfConditions(double psiA, double psiB, Vec2 gradA, Vec2 gradB, const Sym22& hessA,
@@ -107,15 +113,15 @@ inline ConditionsResidual ResidualOfConditions(double psiA, double psiB, Vec2 gr
 
 /// Whether a point solves the common-level conditions to what double precision allows
 /// (ResidualOfConditions): the levels within 1e-11 of each other (the level then within
-/// q·1e-11 ≤ 2e-10 of the common level) and the normals opposed to 1e-10 rad, or each within
-/// ten times its rounding. (ConditionsWithin 1e-11 decides the common case first, without roots
-/// or divisions.)
+/// q·1e-11 ≤ 2e-10 of the common level, for gauges ψ = λ^{1/q}, `power` = q) and the normals
+/// opposed to 1e-10 rad, or each within ten times its rounding up to the standard (Within).
+/// (ConditionsWithin 1e-11 decides the common case first, without roots or divisions.)
 inline bool ConditionsHold(double psiA, double psiB, Vec2 gradA, Vec2 gradB, const Sym22& hessA, const Sym22& hessB,
-                           double delta)
+                           double delta, double power)
 {
 	if (ConditionsWithin(psiA, psiB, gradA, gradB, 1e-11, 1e-11))
 		return true;
-	return ResidualOfConditions(psiA, psiB, gradA, gradB, hessA, hessB, delta).Within(1e-11, 1e-10);
+	return ResidualOfConditions(psiA, psiB, gradA, gradB, hessA, hessB, delta).Within(1e-11, 1e-10, power);
 }
 
 /// The largest absolute row sum of a symmetric 2×2 matrix (a bound on its eigenvalues).

@@ -108,7 +108,8 @@ bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb,
 		    (ConditionsWithin(e.fA, e.fB, e.gA, e.gB, 1e-11, 1e-11) ||
 		     ConditionsHold(e.fA, e.fB, e.gA, e.gB, e.hA, e.hB,
 		                    std::numeric_limits<double>::epsilon() *
-		                        std::max({Length(x), Length(rel.p), Length(pa.p), Length(pb.p)}))))
+		                        std::max({Length(x), Length(rel.p), Length(pa.p), Length(pb.p)}),
+		                    1.0)))
 			return mu > 0.0;
 		previous = stepX;
 		previousMu = stepMu;

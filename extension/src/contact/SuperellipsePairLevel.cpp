@@ -373,7 +373,7 @@ bool Solved(const PairInA& p, const Point& q, const Pose& pa, const Pose& pb, do
 {
 	if (ConditionsWithin(q.A.psi, q.B.psi, Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), 1e-11, 1e-11))
 		return true; // (the common case, before the roots of the reach)
-	return ResidualAt(p, q, pa, pb, size).Within(1e-11, 1e-10);
+	return ResidualAt(p, q, pa, pb, size).Within(1e-11, 1e-10, p.q);
 }
 
 // The answer at the solved point q (opposed gradients and a positive multiplier, else the
@@ -526,7 +526,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 			if (Solved(p, q, pa, pb, size))
 				break; // rounding floor
 			// Near the solution the full step, as the generic solver takes it.
-			if (!(forced < 2 && ResidualAt(p, q, pa, pb, size).Within(1e-4, 1e-4)))
+			if (!(forced < 2 && ResidualAt(p, q, pa, pb, size).Within(1e-4, 1e-4, p.q)))
 			{
 				result.failure = "line search stalled (no step lowers the residual)";
 				return result;
