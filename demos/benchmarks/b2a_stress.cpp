@@ -554,6 +554,17 @@ Outcome Run(const Config& c, bool dense)
 				k[int(kind)].expectedFailure = k[int(kind)].status == SolveStatus::failed && k[int(kind)].failure[0] != '\0';
 			k[int(Kind::level)].point = k[int(Kind::newton)].point = kNaN;
 		}
+		else if (o.contact.method == SolveMethod::overlapAxis)
+		{
+			// No level met the solvers' standard and the pair overlaps (needles crossing deep
+			// inside each other): the contact is the axis of least overlap, checked as for
+			// coincident centres.
+			const double seconds = kc.seconds;
+			kc = CheckAnswer(c, contact, A, B, c.problem, false, true);
+			kc.point = kc.estimate = kc.normal = kc.level = kNaN;
+			CheckOverlapAxis(c, o.contact, A, B, kc);
+			kc.seconds = seconds;
+		}
 		else
 		{
 			kc = CheckAnswer(c, contact, A, B, c.problem, true, true);
@@ -870,10 +881,10 @@ struct WorstCases
 		std::sort(list.begin(), list.end(), [](const Entry& a, const Entry& b) { return a.value > b.value; });
 		if (list.size() > keep) list.resize(keep);
 	}
-	void Flag(const std::string& key, std::uint64_t index)
+	void Flag(const std::string& key, std::uint64_t index, size_t keep = 20)
 	{
 		auto& list = bad[key];
-		if (list.size() < 20) list.push_back(index);
+		if (list.size() < keep) list.push_back(index);
 	}
 	void Add(const Config& c, const Outcome& o)
 	{
@@ -983,6 +994,7 @@ struct RangeStats
 	/// overlapping deep inside each other), and heart pairs (the grid method's tips).
 	std::uint64_t failedDeep = 0, wrongNormalsDeep = 0, wrongLevelsDeep = 0;
 	std::uint64_t wrongNormalsHearts = 0, wrongLevelsHearts = 0;
+	std::uint64_t overlapAxis = 0; ///< contacts by the axis of least overlap (no level met the standard), coincident centres apart
 	std::uint64_t warmSteps = 0, warmUnchecked = 0;
 	std::uint64_t warmFailed = 0, warmWrongVerdicts = 0, warmWrongNormals = 0, warmWrongLevels = 0;
 	/// The worst errors of the well-posed answers, of superellipse pairs (common level) and of heart
@@ -1004,6 +1016,7 @@ struct RangeStats
 	void Add(const Config& c, const Outcome& o, bool unused, const std::string& name, WorstCases& worst)
 	{
 		++configurations;
+		if (!unused && c.category != Category::coincident && o.contact.method == SolveMethod::overlapAxis) ++overlapAxis;
 		if (c.tipAgainstTip) ++tipAgainstTip;
 		else if ((c.cornerA && o.check[int(Kind::scaleAB)].ran && o.check[int(Kind::scaleAB)].unusedSide == unused) ||
 		         (c.cornerB && o.check[int(Kind::scaleBA)].ran && o.check[int(Kind::scaleBA)].unusedSide == unused))
@@ -1048,11 +1061,13 @@ struct RangeStats
 		illNormals += any.illNormal;
 		illLevels += any.illLevel;
 		const std::string key = name + "/" + CategoryName(c.category);
-		if (any.failed) worst.Flag(key + "/failed", c.index);
-		if (any.nonFinite) worst.Flag(key + "/non_finite", c.index);
-		if (any.wrongVerdict) worst.Flag(key + "/wrong_verdict", c.index);
-		if (any.wrongNormal) worst.Flag(key + "/wrong_normal", c.index);
-		if (any.wrongLevel) worst.Flag(key + "/wrong_level", c.index);
+		// (In range every one of them, up to 100 per category and kind: they are the run's news.)
+		const size_t keep = name == RangeName(Range::inRange) ? 100 : 20;
+		if (any.failed) worst.Flag(key + "/failed", c.index, keep);
+		if (any.nonFinite) worst.Flag(key + "/non_finite", c.index, keep);
+		if (any.wrongVerdict) worst.Flag(key + "/wrong_verdict", c.index, keep);
+		if (any.wrongNormal) worst.Flag(key + "/wrong_normal", c.index, keep);
+		if (any.wrongLevel) worst.Flag(key + "/wrong_level", c.index, keep);
 	}
 	void AddWorst(const Config& c, const Check& k, Kind kind)
 	{
@@ -1080,6 +1095,7 @@ struct RangeStats
 		j["wrong_levels_of_superellipse_pairs_below_level_1e-9"] = wrongLevelsDeep;
 		j["non_unique_normals"] = Json{{"tip_against_tip", tipAgainstTip}, {"one_sided_scale_at_its_tip", scaleAtItsTip}};
 		j["ill_conditioned_normals"] = illNormals;
+		j["contacts_by_the_axis_of_least_overlap"] = overlapAxis;
 		j["ill_conditioned_levels"] = illLevels;
 		j["inaccurate"] = inaccurate;
 		j["worst_superellipse_pairs"] = worstCommon.ToJson();
@@ -1269,6 +1285,7 @@ Json Headline(bool quick, std::uint64_t seed, std::uint64_t count, const std::ar
 	j["notes"] = Json::array({
 		"in range: size ratio below 1e4, common level (or one-sided scale, in units of the own level) within 1e-30 to 1e30, neither centre inside the other particle; beyond range, each kind apart (the first that applies, in the order coincident centres, centre inside the other, size ratio, level), and a heart pair's one-sided scale that its contact was not built from",
 		"failures and wrong answers are also counted apart where the level is below 1e-9 of the own (needles crossing or overlapping deep inside each other) and for heart pairs (the grid method's tips)",
+		"where no level meets the solvers' standard and the pair overlaps, the contact is the axis of least overlap (as for coincident centres), checked as such (contacts_by_the_axis_of_least_overlap)",
 		"counts are of configurations: one counts as failed, wrong or inaccurate when any of its results (contact_auto, level_auto, newton, scale_ab_auto, scale_ba_auto, and the warm-started contacts) is; Newton alone (newton) may fail, as the automatic path then falls back, but its converged answers are held to the same standard",
 		"a normal is wrong when it is off by more than 1e-6 rad, a level when it is off by more than 1e-9 of itself, and either only beyond 100 times what the rounding of the coordinates alone explains (eps*max|coordinate|*(kappaA + kappaB) for normals, eps*max|coordinate|*|grad|/C for levels); where that rounding exceeds a hundredth of the standard the normal (level) is counted as ill-conditioned (ill_conditioned_normals, ill_conditioned_levels), and worst errors leave it out; normals that are not unique are counted (non_unique_normals) but not judged: a heart's tip against another heart's tip, and a one-sided scale's normal (the scaled particle's gradient) where the point is the scaled heart's own tip",
 		"warm: after its cold contact, every common-level configuration with a reference is solved again with a WarmStart, then after each of 3 small rigid motions of both bodies (moves of 1e-6 to 1e-2 of the smaller size, turns of 1e-6 to 1e-2 rad) from the WarmStart the last solve left, as the Box2D adapter does; each checked against the long-double solution at its poses",
