@@ -76,6 +76,7 @@ struct Config
 {
 	Category category = Category::general; ///< kind
 	std::uint64_t index = 0;               ///< position in the run (with the seed it reproduces the configuration)
+	std::uint64_t seed = 0;                ///< the run's seed
 	ShapeSpec a, b;                        ///< the shapes' parameters
 	ShapePtr shapeA, shapeB;               ///< the library's shapes (the same object when identical)
 	double angleA = 0.0, angleB = 0.0;     ///< orientations the poses were made from
@@ -85,6 +86,8 @@ struct Config
 	double targetLevel = 0.0;              ///< the level it was built for
 	double normalAngle = 0.0;              ///< the normal ν it was built for
 	bool corner = false;                   ///< the built point is a heart's tip (not polished)
+	bool cornerA = false, cornerB = false; ///< the built point is A's tip, B's tip (hearts)
+	bool tipAgainstTip = false;            ///< both built points are heart tips: the normal is not unique
 	bool centreInside = false;             ///< one centre lies inside the other particle
 	LevelSolution answer;                  ///< the exact answer for the double poses (when constructed)
 	V built;                               ///< the built point before the centres were rounded
@@ -241,6 +244,9 @@ inline bool Build(Config& c, double level, double normalAngle, V offset, bool re
 	c.normalAngle = normalAngle;
 	c.built = offset;
 	c.corner = sa.corner || sb.corner;
+	c.cornerA = sa.corner;
+	c.cornerB = sb.corner;
+	c.tipAgainstTip = sa.corner && sb.corner;
 	c.constructed = true;
 	const Posed PA{A, ref::Of(c.pa)}, PB{B, ref::Of(c.pb)};
 	c.centreInside = LevelAt(PB, PA.pose.p) <= B.Own() || LevelAt(PA, PB.pose.p) <= A.Own();
@@ -274,6 +280,7 @@ inline Config MakeConfig(std::uint64_t seed, std::uint64_t index, ShapePool& poo
 	test::Random r = RandomFor(seed, index);
 	Config c;
 	c.index = index;
+	c.seed = seed;
 	c.category = CategoryOf(index);
 	c.angleA = r.Angle();
 	c.angleB = r.Angle();
@@ -319,6 +326,8 @@ inline Config MakeConfig(std::uint64_t seed, std::uint64_t index, ShapePool& poo
 		const V p = RandomOffset(r, c.size);
 		c.pa = Pose(Vec2(double(p.x), double(p.y)), c.angleA);
 		c.pb = Pose(c.pa.p + Vec2(d * std::cos(t), d * std::sin(t)), c.angleB);
+		const Posed A{c.a.Ref(), ref::Of(c.pa)}, B{c.b.Ref(), ref::Of(c.pb)};
+		c.centreInside = LevelAt(B, A.pose.p) <= B.shape.Own() || LevelAt(A, B.pose.p) <= A.shape.Own();
 		return c;
 	}
 	auto level = [&]() {

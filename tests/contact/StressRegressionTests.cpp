@@ -327,11 +327,13 @@ TEST_CASE("stress (known failure): the grid scale of a small heart against a lar
 	}
 }
 
-TEST_CASE("stress (known failure): the automatic common level of 1000:1 needles is as exact as Newton's" *
-          doctest::should_fail())
+TEST_CASE("stress: the automatic common level of 1000:1 needles is as exact as Newton's")
 {
-	// When Newton fails the min–max answer is polished by Newton; where that polish fails too the
-	// raw min–max answer is returned, and it can be far off.
+	// Newton hit its iteration cap here and so did the Newton polish of the min–max answer, and
+	// the raw min–max answer was returned as converged, 0.21 and 1.4 rad off in its normal. The
+	// raw answer is now returned only where it meets the solvers' standard (ConditionsHold); here
+	// the polish converges: Jacobians that only the units made look singular are solved
+	// (BorderedCurvature), and the inner minimisation of the min–max reaches its minimiser.
 	for (const Pair& p : MinMaxPairs())
 	{
 		INFO(std::string(p.name));
@@ -355,4 +357,136 @@ TEST_CASE("stress (known failure): nearly concentric high-exponent particles get
 	const Pose pb(Vec2(0x1.f81f26e9f2ddcp-9, 0x1.3a16cf1d67c25p-7), -0x1.0f38c1fe89c76p+1);
 	CHECK(SolveCommonLevel(*a, pa, *b, pb).Ok());
 	CHECK(ComputeContact(*a, pa, *b, pb).Ok());
+}
+
+TEST_CASE("stress: a small heart beside a long plank gets the side that measures its gap")
+{
+	// Configuration 954351 of the seed-1 million-pair run: a heart of size 0.26 beside a 100 ×
+	// 0.18 plank (n = 20), 0.26 apart. The grid rescales the heart onto the plank's samples (0.8
+	// apart along it) and finds the farther lobe (level 0.166, not 0.075); its contact's line
+	// crosses the plank behind the point, so its separation was measured negative and set to the
+	// least double to agree with the verdict, and as the "nearer" of the two sides it won: the
+	// normal came back reversed with a separation of 5e-324. A separation set that way now loses
+	// to the other side's measurement. Reference: the dense one-sided scale of the heart onto the
+	// plank (SurfaceMin), whose normal (the heart's gradient there) is the direction from the heart
+	// to the plank; the pair and its neighbours (the heart 20 % smaller or larger, moved by 0.03).
+	const double alpha = 0.0070753377435844979;
+	const double pa = 50.217406735612784, pb = 0.087774320784963958;
+	const auto plank = MakeSuperellipse(pa, pb, 20.0, 20.0);
+	const Pose plankPose(Vec2(16.844012172522742, 42.18564362946767), -1.9707971791366008);
+	const ref::RefShape refPlank = ref::RefShape::Super(pa, pb, 20.0L, 20.0L);
+	for (const double scale : {1.0, 0.8, 1.25})
+		for (const Vec2 shift : {Vec2(), Vec2(0.03, 0.0), Vec2(0.0, -0.03)})
+		{
+			const double al = alpha * scale * scale;
+			const auto heart = MakeHeart(al);
+			const Pose heartPose(Vec2(-0.24587679304906673, 0.22733982644232081) + shift, 0.43485901365236046);
+			INFO("heart size x" << scale << ", moved by (" << shift.x << ", " << shift.y << ")");
+			const ref::SurfaceMinResult m =
+				ref::SurfaceMin(ref::RefShape::Heart(al), ref::Of(heartPose), refPlank, ref::Of(plankPose), refPlank.Own(), 8192, 8);
+			REQUIRE(double(m.value) > 2.0 * al); // apart, by a clear margin
+			const V towardsPlank = ref::Unit(ref::WorldDeriv(ref::RefShape::Heart(al), ref::Of(heartPose), m.point).grad);
+			const ContactResult c = ComputeContact(*heart, heartPose, *plank, plankPose);
+			REQUIRE(c.Ok());
+			CHECK(!c.touching);
+			CHECK(c.separation > 0.1);
+			// The contact's side may be the plank's (rescaled onto the heart): its normal is then
+			// the heart's own at the touching point, within a few 1e-4 rad of the reference's.
+			CHECK(double(ref::Dot(ref::FromVec(c.normal), towardsPlank)) > std::cos(0.01));
+		}
+	// The configuration itself, against the answer it was built for (level 0.0751 of the heart's
+	// α, normal (−0.92095, 0.38968)): the reference finds it.
+	const ref::SurfaceMinResult m = ref::SurfaceMin(ref::RefShape::Heart(alpha), ref::Of(Pose(Vec2(-0.24587679304906673, 0.22733982644232081), 0.43485901365236046)),
+	                                                refPlank, ref::Of(plankPose), refPlank.Own(), 8192, 8);
+	CHECK(double(m.value) == doctest::Approx(0.07506902241068425).epsilon(1e-9));
+}
+
+namespace
+{
+/// A superellipse pair as written out in decimal (17 digits round-trip) with its pose angles.
+struct NeedlePair
+{
+	const char* name;
+	double a[4], b[4];      // a, b, n, m of each
+	double pa[3], pb[3];    // x, y, angle of each
+	LD level;               // the exact common level (long double, from the answer the pair was built for)
+	V normal;               // A's outward unit normal there
+};
+
+// Issue 42's three needle pairs (a scan of the seed-1 stress run: answers reported converged 0.8
+// to 1.1 rad off in their normals), and two of the seed-1 run's configurations whose mechanisms
+// differ (12411: a Jacobian that only its units made look singular; 19833: an unevaluated last
+// step between a 15 × 0.076 ellipse and a 0.2 × 0.00023 needle at C = 1000).
+const NeedlePair kNeedlePairs[] = {
+	{"633061", {2.4006040009731091, 0.0048147262735754428, 2, 2}, {0.026495810780623578, 2.6786879116531112e-05, 20, 20},
+	 {-1.087957647322805, -2.0539179969710504, 1.081366658921648}, {0.026410030070500769, 0.087223850154749524, 2.1373791992017015},
+	 0.99999999999997L, V{0.044273L, 0.999019L}},
+	{"538582", {1.5973382745947704, 0.0017229005100355323, 20, 20}, {0.001971656848202899, 1.7737537856315668, 17.76704790605617, 2.084880143375174},
+	 {-0.025791713489187563, 3.6361209649174713, 1.5647149169610861}, {-1.6809555762444932, 0.76460751568696028, 2.2199739688891489},
+	 1.3723653115326L, V{-0.789800L, -0.613364L}},
+	{"565601", {0.042704615308228194, 5.2626928317216081e-05, 2, 2}, {1.4657374212988715e-06, 0.001, 19.808510917487126, 3.9426138394980179},
+	 {0.16672156458527293, -0.065706418877840914, 2.7789559387072318}, {0.0035061355849952585, -0.0017007875983254554, -0.04670696121593032},
+	 16.7307644803308L, V{0.173629L, 0.984811L}},
+	{"12411", {6.9119743489156837e-05, 0.044492674792638347, 16, 8}, {1.0616348594907454, 384.44818038763668, 2, 2},
+	 {-0.097127328698454279, -0.19311935557749146, -2.6056832846634466}, {-2414.1190559109041, -6342.5629496227557, 2.7779442734239241},
+	 311.62803563076093L, V{-0.99499505187371449L, 0.099924205009718338L}},
+	{"19833", {14.880847765120723, 0.076245035563097197, 2, 2}, {0.19681308867076042, 0.00023162043409973663, 2.6999743418166045, 8.1596885290409915},
+	 {107.99942180467386, 457.94140265093796, 1.3391291989543381}, {-2.4699217414504258, -0.82172873021429904, -2.8377037747403997},
+	 1000.0000000000001L, V{-0.22659495173338811L, -0.97398907994337571L}},
+};
+
+double AngleBetween(V a, V b) { return double(std::atan2(std::fabs(ref::Cross(a, b)), ref::Dot(a, b))); }
+} // namespace
+
+TEST_CASE("stress: needle pairs and their neighbours converge to the solution, not short of it")
+{
+	// Each pair as written, and its neighbours: B moved by a thousandth of its size along x and
+	// along y, B turned by 1e-3 rad, and both 0.1 % larger. Reference: the dense common level
+	// (CommonLevelRef: the surface minimum over B's level sets, Illinois on log C, the point
+	// polished by long-double Newton; no library solver), its normal A's gradient there, checked
+	// against the answers the pairs were built for. Every answer reported converged — the
+	// automatic level solve, Newton alone where it converges, and the contact — has its level
+	// within 1e-9 of the reference's and its normal within 1e-6 rad; the automatic ones converge.
+	int neighbours = 0;
+	for (const NeedlePair& n : kNeedlePairs)
+		for (int variant = 0; variant < 5; ++variant)
+		{
+			const double grow = variant == 4 ? 1.001 : 1.0;
+			const double sizeB = std::max(n.b[0], n.b[1]);
+			const Vec2 move = variant == 1 ? Vec2(1e-3 * sizeB, 0.0) : (variant == 2 ? Vec2(0.0, 1e-3 * sizeB) : Vec2());
+			const double turn = variant == 3 ? 1e-3 : 0.0;
+			const auto a = MakeSuperellipse(grow * n.a[0], grow * n.a[1], n.a[2], n.a[3]);
+			const auto b = MakeSuperellipse(grow * n.b[0], grow * n.b[1], n.b[2], n.b[3]);
+			const Pose pa(Vec2(n.pa[0], n.pa[1]), n.pa[2]);
+			const Pose pb(Vec2(n.pb[0], n.pb[1]) + move, n.pb[2] + turn);
+			const ref::RefShape ra = ref::RefShape::Super(grow * n.a[0], grow * n.a[1], n.a[2], n.a[3]);
+			const ref::RefShape rb = ref::RefShape::Super(grow * n.b[0], grow * n.b[1], n.b[2], n.b[3]);
+			const ref::CommonLevelResult want = ref::CommonLevelRef(ra, ref::Of(pa), rb, ref::Of(pb));
+			const V normal = ref::Unit(ref::WorldDeriv(ra, ref::Of(pa), want.point).grad);
+			INFO(std::string(n.name) << ", variant " << variant << ": reference C = " << double(want.level));
+			if (variant == 0)
+			{
+				// The issue's levels to 14 digits, its normals to 6.
+				CHECK(double(std::fabs(want.level - n.level) / n.level) < 1e-12);
+				CHECK(AngleBetween(normal, n.normal) < 2e-6);
+			}
+			else
+				++neighbours;
+			auto check = [&](const char* what, bool ok, double level, Vec2 normalGot) {
+				INFO(what);
+				if (!ok)
+					return;
+				CHECK(double(std::fabs(LD(level) - want.level) / want.level) < 1e-9);
+				CHECK(AngleBetween(ref::FromVec(normalGot), normal) < 1e-6);
+			};
+			const LevelResult automatic = SolveCommonLevel(*a, pa, *b, pb);
+			CHECK(automatic.Ok());
+			check("automatic", automatic.Ok(), automatic.level, automatic.normal);
+			const LevelResult newton = SolveCommonLevel(*a, pa, *b, pb, MethodChoice::newton);
+			check("newton", newton.Ok(), newton.level, newton.normal);
+			const ContactResult contact = ComputeContact(*a, pa, *b, pb);
+			CHECK(contact.Ok());
+			check("contact", contact.Ok(), contact.level, contact.normal);
+		}
+	CHECK(neighbours == 20);
 }

@@ -367,7 +367,7 @@ TEST_CASE("superellipse pairs: on hard pairs the fast path is never less accurat
 	// or 1e-12 of the size). This is where an early stop of the fast Newton showed: a last step
 	// taken unevaluated before the multiplier had settled cost up to 1e-8 of the level.
 	Random rng(2024);
-	int compared = 0, disagreed = 0;
+	int compared = 0, disagreed = 0, failed = 0;
 	for (int k = 0; k < 3000; ++k)
 	{
 		const double size = rng.LogUniform(1e-3, 1e3);
@@ -381,7 +381,19 @@ TEST_CASE("superellipse pairs: on hard pairs the fast path is never less accurat
 		p.pb = Pose(p.pa.p + d * Vec2(std::cos(dir), std::sin(dir)), rng.Angle());
 		const ContactResult fast = SuperellipseContact(*p.a, p.pa, *p.b, p.pb, {}, nullptr);
 		const ContactResult generic = ConvexContact(*p.a, p.pa, *p.b, p.pb, {}, nullptr);
-		REQUIRE(fast.Ok());
+		if (!fast.Ok())
+		{
+			// Only where no path has an answer that meets the standard and the particles do not
+			// overlap (where they do, the contact is the axis of least overlap): the level solve
+			// fails, with a reason, for two needles crossing deep inside each other at a level of
+			// 4e-31, which came back converged with its normals 0.06 rad apart.
+			INFO(p.a->Describe() << " vs " << p.b->Describe() << ": " << std::string(fast.failure));
+			CHECK(!generic.Ok());
+			const ref::CommonLevelResult want = ref::CommonLevelRef(RefOf(*p.a), ref::Of(p.pa), RefOf(*p.b), ref::Of(p.pb));
+			CHECK(double(want.level) < 1e-12);
+			++failed;
+			continue;
+		}
 		if (!generic.Ok())
 			continue;
 		++compared;
@@ -401,6 +413,7 @@ TEST_CASE("superellipse pairs: on hard pairs the fast path is never less accurat
 	}
 	CHECK(compared >= 2990);
 	CHECK(disagreed <= 30);
+	CHECK(failed <= 1);
 }
 
 namespace

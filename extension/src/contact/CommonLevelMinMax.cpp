@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace b2a
 {
@@ -52,10 +53,11 @@ double InnerMinimum(const PairFrame& f, double nu, Vec2& xi, int& evaluations)
 		const double slope = Dot(g, step);
 		double alpha = 1.0;
 		bool accepted = false;
+		double value = phi;
 		for (int k = 0; k < 50; ++k, alpha *= 0.5)
 		{
 			const Vec2 trial = xi + alpha * step;
-			const double value = f.Psi(f.a, trial) + mu * f.Psi(f.b, trial);
+			value = f.Psi(f.a, trial) + mu * f.Psi(f.b, trial);
 			if (value <= phi + 1e-4 * alpha * slope)
 			{
 				xi = trial;
@@ -65,6 +67,23 @@ double InnerMinimum(const PairFrame& f, double nu, Vec2& xi, int& evaluations)
 		}
 		if (!accepted || alpha * len < 1e-15)
 			break;
+		// Far from the minimiser the sum grows like a power of high degree k (ψ of a needle with
+		// exponent 20 in the gauge of another's exponent 2: k ≈ 10), where Newton's step covers
+		// 1/(k − 1) of the way: from a start at ψ ~ 1e46 a hundred full steps did not reach the
+		// minimiser, and its wrong sign of ψA − ψB closed the outer bracket on a false root.
+		// Where the full step more than halved the sum, longer ones are tried while they lower
+		// it further (within the trust region).
+		if (alpha == 1.0 && value < 0.5 * phi)
+			for (double longer = 2.0; longer * len <= trust; longer *= 2.0)
+			{
+				const Vec2 trial = xi + (longer - alpha) * step;
+				const double further = f.Psi(f.a, trial) + mu * f.Psi(f.b, trial);
+				if (!(further < value))
+					break;
+				xi = trial;
+				value = further;
+				alpha = longer;
+			}
 	}
 	return f.Psi(f.a, xi) - f.Psi(f.b, xi);
 }
@@ -138,6 +157,16 @@ LevelResult SolveCommonLevelMinMax(const Shape& a, const Pose& pa, const Shape& 
 	if (!A.finite)
 	{
 		result.failure = "min-max: non-finite level at the answer";
+		return result;
+	}
+	// Newton's polish failed: the min–max point itself is the answer only where it solves the
+	// conditions to the same standard (ConditionsHold; the inner minimisation and Brent's
+	// bracket each stop at their own tolerances, which a needle's levels do not see).
+	const GaugeValue a2 = f.Eval(f.a, xi, true), b2 = f.Eval(f.b, xi, true);
+	const double reach = std::max({Length(f.World(xi)), Length(pa.p), Length(pb.p)});
+	if (!ConditionsHold(a2.psi, b2.psi, a2.grad, b2.grad, a2.hess, b2.hess, std::numeric_limits<double>::epsilon() * reach / f.scale, f.power))
+	{
+		result.failure = "min-max: stopped short of a solution (its levels or normals disagree beyond rounding)";
 		return result;
 	}
 	result.status = SolveStatus::converged;

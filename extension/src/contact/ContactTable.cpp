@@ -19,7 +19,8 @@
 //  Newton         from NewtonLevel                                                   NewtonLevel
 //  Grid           one side (ChooseGridSide)                  → both ways              GridLevel
 //  SepAxis        separating axis over the support function
-//  "from L": coincident centres → OverlapAxis; else ContactFromLevel of the level chain L.
+//  "from L": coincident centres → OverlapAxis; else ContactFromLevel of the level chain L
+//           (L giving up on an overlapping pair → OverlapAxis).
 //  level chains: CircleLevel   closed form
 //                EllipseLevel  ellipse pair (Perram–Wertheim)  → NewtonLevel
 //                NewtonLevel   Newton from the warm start      → Newton cold → min–max
@@ -172,7 +173,18 @@ ContactResult ContactFromLevelChain(LevelFunction level, const Shape& a, const P
 		return OverlapAxisContact(a, pa, b, pb);
 	const LevelResult r = RunLevel(level, false, a, pa, b, pb, options, warm);
 	if (!r.Ok())
+	{
+		// No level meets the solvers' standard (needles crossing deep inside each other, levels
+		// of 1e-12 and below): where the particles overlap, the axis of least overlap still
+		// separates them, as for coincident centres. (Not for Newton alone, asked for by name.)
+		if (level != &NewtonAlone)
+		{
+			ContactResult axis = OverlapAxisContact(a, pa, b, pb);
+			if (axis.touching)
+				return axis;
+		}
 		return FailedContact(r);
+	}
 	return ContactFromLevel(a, pa, b, pb, r, r.level <= 1.0);
 }
 

@@ -141,6 +141,12 @@ ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const 
 	// The deeper (or nearer) of the two. Ties (two equal circles, say) go to the answer that
 	// rescales the particle whose pose comes first in a fixed order, an order that does not
 	// depend on which of the two is called A.
+	// A separation that SetSeparation set to agree with the verdict was measured with the other
+	// sign: that side's point and normal do not fit (a small heart beside a plank, rescaled onto
+	// the plank's sparse samples, found the wrong lobe), and the other side's measurement decides.
+	const bool clampedAB = cab.separation == std::numeric_limits<double>::denorm_min(),
+	           clampedBA = cba.separation == std::numeric_limits<double>::denorm_min();
+	if (clampedAB != clampedBA) return clampedAB ? cba : cab;
 	const double tol = 1e-12 * 0.5 * (a.BoundingRadius() + b.BoundingRadius());
 	if (cab.separation < cba.separation - tol) return cab;
 	if (cba.separation < cab.separation - tol) return cba;

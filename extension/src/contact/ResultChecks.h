@@ -41,8 +41,8 @@ Result NonFiniteFailure(const Result& r)
 /// can still overflow (circles 1e300 apart have the level (d / (rA + rB))² = inf): a result with
 /// a field that is not finite becomes a failure (NonFiniteFailure). In place, so that a caller
 /// that checks the named result it returns copies nothing: checked by value and returned, the
-/// result was copied once more on every contact (a function parameter is not returned in place),
-/// 2 % of a warm ellipse or superellipse contact.
+/// result would be copied once more on every contact (a function parameter is not returned in
+/// place).
 inline void CheckResult(ContactResult& c)
 {
 	const bool finite = std::isfinite(c.level) && IsFinite(c.point) && IsFinite(c.normal) && IsFinite(c.pointA) &&

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace b2a
@@ -44,6 +45,28 @@ Point Evaluate(const PairFrame& f, Vec2 xi, double psiB0)
 	p.F2 = p.B.psi - psiB0;
 	p.finite = p.A.finite && p.B.finite && LengthSquared(p.na) > 0.0 && LengthSquared(p.nb) > 0.0;
 	return p;
+}
+
+// Whether a point solves the one-sided conditions to what double precision allows, on the
+// conditions themselves (ConditionsResidual's standard): B's gauge within 1e-11 of its own level
+// and the unit normals parallel to 1e-10 rad, or each within ten times what the rounding of the
+// point's coordinates leaves. (The merit's own units, an angle and a length in ξ, cannot see a
+// needle's thickness: a length of 1e-10 of the pair's size is a level off by 1e-4 across a needle
+// of 1e-6.)
+bool ScaleSolved(const PairFrame& f, const Point& p, double psiB0)
+{
+	const double eps = std::numeric_limits<double>::epsilon();
+	const double reach = std::max({Length(f.World(p.xi)), Length(f.a.pose.p), Length(f.b.pose.p)});
+	const double delta = eps * reach / f.scale;
+	const double ga = Length(p.A.grad), gb = Length(p.B.grad);
+	const Vec2 t = Perp(p.na);
+	ConditionsResidual r;
+	r.level = std::fabs(p.F2) / psiB0;
+	r.levelFloor = gb * delta / psiB0 + 4.0 * eps;
+	r.angle = std::fabs(p.F1);
+	r.angleFloor = (std::fabs(Dot(t, p.A.hess * t)) / ga + std::fabs(Dot(t, p.B.hess * t)) / gb) * delta + 4.0 * eps;
+	r.valid = std::isfinite(r.level + r.levelFloor + r.angle + r.angleFloor);
+	return r.Within(1e-11, 1e-10, f.power);
 }
 
 LevelResult RunScaleNewton(const PairFrame& f, Vec2 xi, double trust, const SolverOptions& options)
@@ -93,13 +116,15 @@ LevelResult RunScaleNewton(const PairFrame& f, Vec2 xi, double trust, const Solv
 		}
 		if (!accepted)
 		{
-			if (m0 < 1e-20)
+			if (ScaleSolved(f, p, psiB0))
 				break; // rounding floor
 			result.failure = "line search stalled (no step lowers the residual)";
 			return result;
 		}
 		p = next;
-		if ((limit == 1.0 && alpha == 1.0 && alpha * step <= options.stepTolerance) || merit(p) == 0.0)
+		// A step below the tolerance ends the solve only at a solution.
+		if ((limit == 1.0 && alpha == 1.0 && alpha * step <= options.stepTolerance && ScaleSolved(f, p, psiB0)) ||
+		    merit(p) == 0.0)
 			break;
 		if (it == options.maxIterations)
 		{

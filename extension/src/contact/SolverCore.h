@@ -5,7 +5,9 @@
 #include "b2analytic/SuperellipseShape.h"
 #include "contact/PairFrame.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <typeinfo>
 
 namespace b2a
@@ -19,6 +21,113 @@ inline bool NewtonSettled(double now, double before, double tolerance)
 {
 	return now <= 0.1 * tolerance ||
 	       (before > 0.0 && now < 0.25 * before && 10.0 * now * now * now <= tolerance * before * before);
+}
+
+/// How far the bordered Newton Jacobian J = [[H, g], [dᵀ, 0]] (H symmetric) is from singular,
+/// whatever the units of its rows and columns: det J = −(Rd)ᵀH(Rg) with R the quarter turn, so
+/// |det J| / (|g||d|‖H‖∞) is H's curvature across the border's directions relative to its
+/// largest. That is what the rounding of H's entries (parts in 1e16 of the largest) leaves of a
+/// step: a relative error of about 1e-16 over it. J's own condition number also carries the
+/// units: a needle's H grows like 1/thickness² across it and its gradient like 1/thickness, and
+/// rcond falls with the thickness where the step is as good as any.
+inline double BorderedCurvature(double h11, double h12, double h22, double g1, double g2, double d1, double d2)
+{
+	const double u1 = -d2, u2 = d1, v1 = -g2, v2 = g1; // Rd, Rg
+	const double across = u1 * (h11 * v1 + h12 * v2) + u2 * (h12 * v1 + h22 * v2);
+	const double rows = std::fabs(h12) + std::max(std::fabs(h11), std::fabs(h22));
+	return std::fabs(across) / (std::sqrt((g1 * g1 + g2 * g2) * (d1 * d1 + d2 * d2)) * rows);
+}
+
+/// Whether a Newton step on the common-level conditions can be trusted: J's condition number
+/// above 1e-14 (the solvers' own test), or, where the units make that fall (BorderedCurvature),
+/// H's curvature across the gradients above 1e-12 of its largest (the step then good to 1e-4).
+inline bool BorderedStepUsable(double rcond, double h11, double h12, double h22, double g1, double g2, double d1, double d2)
+{
+	return rcond > 1e-14 || (rcond > 0.0 && BorderedCurvature(h11, h12, h22, g1, g2, d1, d2) > 1e-12); // (0: no step solved)
+}
+
+/// Whether the levels agree to `level` of λA and the gradients are opposed to `angle` radians
+/// (the sine of the angle between one and the other's reverse), tested on squares: no root, no
+/// division. With 1e-11 for both it is a cheap sufficient form of ConditionsHold.
+inline bool ConditionsWithin(double levelA, double levelB, Vec2 gradA, Vec2 gradB, double level, double angle)
+{
+	const double d = levelA - levelB, cross = Cross(gradA, gradB);
+	return d * d <= level * level * levelA * levelA && cross * cross <= angle * angle * LengthSquared(gradA) * LengthSquared(gradB) &&
+	       Dot(gradA, gradB) < 0.0;
+}
+
+/// Whether a point lies where Newton's steps may be trusted to converge quadratically, so that a
+/// step which the previous steps' contraction shows to be the last may be taken unevaluated: the
+/// levels within 1e-6 of each other and the normals within 1e-5 rad of opposed. Between a needle
+/// and a larger particle the steps contract by 1e4 where the levels still differ by a factor 2
+/// (the needle's gradient, ~1/thickness, makes every step small); a needle's normal turns fast
+/// with the point (2e-6 rad at a step of 3e-11 of the size), so its test is looser.
+inline bool NearSolution(double levelA, double levelB, Vec2 gradA, Vec2 gradB)
+{
+	return ConditionsWithin(levelA, levelB, gradA, gradB, 1e-6, 1e-5);
+}
+
+/// How far a point is from solving the common-level conditions, measured on the conditions
+/// themselves, and how far the rounding of its coordinates alone would put it: the gauges'
+/// mismatch |ψA − ψB| relative to their mean, and the angle between one unit gradient and the
+/// other's reverse (|n̂A + n̂B|), the point known to `delta` in the gradients' units, which moves
+/// each ψ by |∇ψ|·delta and turns each normal by its level curve's curvature times delta (plus a
+/// few parts in 1e16 of evaluation). A needle's thinness enters through its gradient and its
+/// curvature, which the pair's size does not show.
+struct ConditionsResidual
+{
+	double level = 0.0, levelFloor = 0.0; ///< relative mismatch of the levels, and its rounding
+	double angle = 0.0, angleFloor = 0.0; ///< misalignment of the normals (radians), and its rounding
+	bool valid = false;                   ///< false: a gradient vanishes or is not finite
+	/// Both parts within their tolerance, or within ten times their rounding, but never beyond
+	/// the level a converged answer is held to (1e-9 of itself: the gauges to 1e-9/q, `power` =
+	/// q), nor normals misaligned beyond 1e-4 rad: a candidate at a sharp tip would otherwise
+	/// excuse itself by its own curvature. (Between 1e-6 and 1e-4 the rounding of one particle's
+	/// normal at a needle's tip can exceed the standard while the other's, the level solve's
+	/// normal, is exact.)
+	bool Within(double levelTolerance, double angleTolerance, double power) const
+	{
+		return valid && level <= std::max(levelTolerance, std::min(10.0 * levelFloor, 1e-9 / power)) &&
+		       angle <= std::max(angleTolerance, std::min(10.0 * angleFloor, 1e-4));
+	}
+};
+inline ConditionsResidual ResidualOfConditions(double psiA, double psiB, Vec2 gradA, Vec2 gradB, const Sym22& hessA,
+                                               const Sym22& hessB, double delta)
+{
+	ConditionsResidual r;
+	const double eps = std::numeric_limits<double>::epsilon();
+	const double la = Length(gradA), lb = Length(gradB);
+	const double mean = 0.5 * (std::fabs(psiA) + std::fabs(psiB));
+	if (!(la > 0.0) || !(lb > 0.0) || !std::isfinite(la + lb) || !(mean > 0.0))
+		return r;
+	const Vec2 na = gradA / la, nb = gradB / lb;
+	const Vec2 t = Perp(na);
+	const double curvature = std::fabs(Dot(t, hessA * t)) / la + std::fabs(Dot(t, hessB * t)) / lb;
+	r.level = std::fabs(psiA - psiB) / mean;
+	r.levelFloor = (la + lb) * delta / mean + 4.0 * eps;
+	r.angle = Length(na + nb);
+	r.angleFloor = curvature * delta + 4.0 * eps;
+	r.valid = std::isfinite(r.level + r.angle + r.levelFloor + r.angleFloor);
+	return r;
+}
+
+/// Whether a point solves the common-level conditions to what double precision allows
+/// (ResidualOfConditions): the levels within 1e-11 of each other (the level then within
+/// q·1e-11 ≤ 2e-10 of the common level, for gauges ψ = λ^{1/q}, `power` = q) and the normals
+/// opposed to 1e-10 rad, or each within ten times its rounding up to the standard (Within).
+/// (ConditionsWithin 1e-11 decides the common case first, without roots or divisions.)
+inline bool ConditionsHold(double psiA, double psiB, Vec2 gradA, Vec2 gradB, const Sym22& hessA, const Sym22& hessB,
+                           double delta, double power)
+{
+	if (ConditionsWithin(psiA, psiB, gradA, gradB, 1e-11, 1e-11))
+		return true;
+	return ResidualOfConditions(psiA, psiB, gradA, gradB, hessA, hessB, delta).Within(1e-11, 1e-10, power);
+}
+
+/// The largest absolute row sum of a symmetric 2×2 matrix (a bound on its eigenvalues).
+inline double NormOf(const Sym22& h)
+{
+	return std::fabs(h.xy) + std::max(std::fabs(h.xx), std::fabs(h.yy));
 }
 
 /// True when both shapes suit Newton (smooth, strictly convex); else fills `failure` with why.

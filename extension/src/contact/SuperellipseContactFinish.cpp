@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace b2a
 {
@@ -42,60 +43,24 @@ inline void EvaluatePair(const SuperellipseTerms& ta, const SuperellipseTerms& t
 	e.hB = Sym22{c * c * db.hx + s * s * db.hy, c * s * (db.hx - db.hy), s * s * db.hx + c * c * db.hy};
 }
 
-} // namespace
-
-bool FinishApplies(const SuperellipseShape& a, const SuperellipseShape& b)
+// Newton on the raw levels from (x, μ) with the pair evaluated there in e: plain steps, with no
+// line search, trust region or fallback of their own. A step larger than 5 % of the size, one
+// that does not contract by 4 as Newton does in its quadratic regime, a singular Jacobian or 4
+// steps without settling return false. On success x, μ and e are the answer, and `iterations`
+// the steps taken.
+bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb, const Pose& pa, const Pose& pb, const Pose& rel,
+                       const SolverOptions& options, double size, Vec2& x, double& mu, PairDerivatives& e, int& iterations)
 {
-	return IntegerExponents(a.Terms()) && IntegerExponents(b.Terms());
-}
-
-bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
-                               const SolverOptions& options, Vec2 x, double mu, int priorIterations, WarmStart* warm,
-                               ContactResult& contact)
-{
-	// The common level solves ∇fA + μ∇fB = 0, fA = fB: at a common level the gauge ψ = f^{1/q}
-	// of the full solver (SolveSuperellipsePairLevel) has ψ'(fA) = ψ'(fB), so its equations have
-	// the same root and the same μ, and their warm starts are interchangeable. The gauge buys
-	// Newton a wide basin from a cold start; near the answer (a warm start: where the point went
-	// with both bodies and along the surfaces; a cold solve handed over once its steps are small)
-	// either form converges quadratically, and without the gauge an evaluation is a few products
-	// per shape: no roots, no divisions. So plain Newton steps, with no line search, trust region
-	// or fallback of their own: a step larger than 5 % of the size, one that does not contract
-	// by 4 as Newton does in its quadratic regime, a singular Jacobian or 4 steps without
-	// settling return false, and the caller's full solver decides (nothing is written before
-	// success).
-	const SuperellipseTerms &ta = a.Terms(), &tb = b.Terms();
-	if (!IntegerExponents(ta) || !IntegerExponents(tb) || !IsFinite(x))
-		return false;
-	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
-	const Pose rel = Relative(pa, pb);
-	PairDerivatives e;
-	EvaluatePair(ta, tb, rel, x, e);
-	// The multiplier given (the warm start's, off by the motion since, or the gauge solve's, off
-	// by its last step) starts Newton, which moves μ with the point. Only where it is unusable
-	// the least-squares one at the start, −∇fA·∇fB/|∇fB|²: taken always, as before 2026-12-05, it
-	// was no better a start, and its division lay between the first evaluation and the first
-	// step (b2a_bench_pairs: warm n = 4 to 8 contacts 4 to 5 % cheaper without it, cold ones 3 to
-	// 4 %, the same answers to rounding).
-	if (!(mu > 0.0) || !std::isfinite(mu))
-	{
-		const double gb2 = LengthSquared(e.gB);
-		mu = gb2 > 0.0 ? -Dot(e.gA, e.gB) / gb2 : 0.0;
-	}
-	if (!(mu > 0.0) || !std::isfinite(mu))
-		return false;
-
 	const double tolerance = options.stepTolerance * size; // on the point, in world lengths
 	double previous = 0.0, previousMu = 0.0;                // the last step in x and in μ (0: none yet)
-	int iterations = 0;
 	for (int it = 1;; ++it)
 	{
 		if (it > 4)
 			return false;
 		iterations = it;
 		// Jacobian of (∇fA + μ∇fB, fA − fB) in (x, μ): [[HA + μHB, ∇fB], [(∇fA − ∇fB)ᵀ, 0]]. Its
-		// condition gets the full solver's test (rcond > 1e-14) at the start only: the later
-		// Jacobians lie within contracting steps (the first at most 5 % of the size) of it.
+		// condition gets the full solver's test at the start only: the later Jacobians lie within
+		// contracting steps (the first at most 5 % of the size) of it.
 		const double minusR[3] = {-(e.gA.x + mu * e.gB.x), -(e.gA.y + mu * e.gB.y), e.fB - e.fA};
 		const double hxx = e.hA.xx + mu * e.hB.xx, hxy = e.hA.xy + mu * e.hB.xy, hyy = e.hA.yy + mu * e.hB.yy;
 		const double dxA = e.gA.x - e.gB.x, dyA = e.gA.y - e.gB.y;
@@ -103,7 +68,7 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 		if (it == 1)
 		{
 			const Solve3Result step = SolveBordered(hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA, minusR);
-			if (!(step.rcond > 1e-14))
+			if (!BorderedStepUsable(step.rcond, hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA))
 				return false;
 			std::copy(step.x, step.x + 3, delta);
 		}
@@ -118,8 +83,10 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 			return false; // not near the answer (or not finite)
 		if (previous > 0.0 && !(stepX <= 0.25 * previous || stepX <= tolerance))
 			return false; // not contracting: not in Newton's quadratic regime
+		// The last step may be taken unevaluated where the steps show the quadratic regime and
+		// the point is near the solution (NearSolution: the contraction alone can mislead).
 		if (previous > 0.0 && previous <= 1e-2 * size && NewtonSettled(stepX, previous, tolerance) &&
-		    NewtonSettled(stepMu, previousMu, options.stepTolerance * mu))
+		    NewtonSettled(stepMu, previousMu, options.stepTolerance * mu) && NearSolution(e.fA, e.fB, e.gA, e.gB))
 		{
 			// The last step, taken without evaluating the shapes: f + ∇f·δ and ∇f + ∇²f·δ, exact to
 			// O(|δ|²), far below the tolerance here.
@@ -130,33 +97,33 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 			x = x + dx;
 			mu += dmu;
 			e.xB = InvRotate(rel.q, x - rel.p);
-			break;
+			return mu > 0.0;
 		}
 		x = x + dx;
 		mu += dmu;
 		EvaluatePair(ta, tb, rel, x, e);
-		if (stepX <= tolerance)
-			break;
+		// A step below the tolerance ends the steps only at a solution (ConditionsHold on the raw
+		// levels: their mismatch and the normals' alignment, to what the rounding of x allows).
+		if (stepX <= tolerance &&
+		    (ConditionsWithin(e.fA, e.fB, e.gA, e.gB, 1e-11, 1e-11) ||
+		     ConditionsHold(e.fA, e.fB, e.gA, e.gB, e.hA, e.hB,
+		                    std::numeric_limits<double>::epsilon() *
+		                        std::max({Length(x), Length(rel.p), Length(pa.p), Length(pb.p)}),
+		                    1.0)))
+			return mu > 0.0;
 		previous = stepX;
 		previousMu = stepMu;
 	}
-	if (!(mu > 0.0))
-		return false;
-	// The gradients opposed (the full solver's test: unit normals within 1e-6 of −1 in their dot
-	// product), without the roots: ∇fA·∇fB < 0 and (∇fA·∇fB)² > (1 − 1e-6)²|∇fA|²|∇fB|².
-	const double ab = Dot(e.gA, e.gB), aa = LengthSquared(e.gA), bb = LengthSquared(e.gB);
-	if (!(ab < 0.0) || !(ab * ab > (1.0 - 2e-6) * aa * bb))
-		return false;
+}
 
-	// The normal: A's outward and B's inward normals agree, ∇fA = −μ∇fB to rounding, and their
-	// weighted mean ∇fA − μ∇fB flips exactly when A and B swap (μ ↦ 1/μ).
-	const Vec2 sum = e.gA - mu * e.gB;
-	const double length = std::sqrt(LengthSquared(sum));
-	const Vec2 n = sum / length;
-	if (!IsFinite(n) || !(length > 0.0))
-		return false;
-	// The points: where the line through x along n leaves A last and enters B first (ContactFromLevel's
-	// rule), x itself where it lies on the surface to 1e-10 of the level.
+// The contact at the solved point x (A's frame) with its normal n there: where the line through
+// x along n leaves A last and enters B first (ContactFromLevel's rule), x itself where it lies
+// on the surface to 1e-10 of the level; where the line misses a particle, ContactFromLevel's
+// search and radial point from the level solved here.
+void ContactAt(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb, const Pose& rel,
+               Vec2 x, double mu, Vec2 n, const PairDerivatives& e, int iterations, ContactResult& contact)
+{
+	const SuperellipseTerms &ta = a.Terms(), &tb = b.Terms();
 	const Vec2 nB = InvRotate(rel.q, -n);
 	const double knownA[3] = {e.fA, Dot(e.gA, n), Dot(n, e.hA * n)};
 	const double knownB[3] = {e.fB, -Dot(e.gB, n), Dot(n, e.hB * n)};
@@ -178,35 +145,84 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 		contact.status = SolveStatus::converged;
 		contact.method = SolveMethod::newton;
 		contact.failure = "";
-		contact.iterations = priorIterations + iterations;
+		contact.iterations = iterations;
 		contact.level = e.fA;
 		contact.point = ToWorld(pa, x);
 		contact.normal = normal;
 		contact.pointA = ToWorld(pa, x + tA * n);
 		contact.pointB = ToWorld(pa, x - tB * n);
 		SetSeparation(contact, e.fA <= 1.0);
+		return;
 	}
-	else
-	{
-		// The line misses a particle (far apart, elongated): ContactFromLevel's search and
-		// radial point, from the level solved here.
-		LevelResult level;
-		level.status = SolveStatus::converged;
-		level.method = SolveMethod::newton;
-		level.iterations = priorIterations + iterations;
-		level.level = e.fA;
-		level.point = ToWorld(pa, x);
-		level.normal = normal;
-		level.multiplier = mu;
-		contact = ContactFromLevel(a, pa, b, pb, level, e.fA <= 1.0);
-	}
+	LevelResult level;
+	level.status = SolveStatus::converged;
+	level.method = SolveMethod::newton;
+	level.iterations = iterations;
+	level.level = e.fA;
+	level.point = ToWorld(pa, x);
+	level.normal = normal;
+	level.multiplier = mu;
+	contact = ContactFromLevel(a, pa, b, pb, level, e.fA <= 1.0);
+}
 
+} // namespace
+
+bool FinishApplies(const SuperellipseShape& a, const SuperellipseShape& b)
+{
+	return IntegerExponents(a.Terms()) && IntegerExponents(b.Terms());
+}
+
+bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                               const SolverOptions& options, Vec2 x, double mu, int priorIterations, WarmStart* warm,
+                               ContactResult& contact)
+{
+	// The common level solves ∇fA + μ∇fB = 0, fA = fB: at a common level the gauge ψ = f^{1/q}
+	// of the full solver (SolveSuperellipsePairLevel) has ψ'(fA) = ψ'(fB), so its equations have
+	// the same root and the same μ, and their warm starts are interchangeable. The gauge buys
+	// Newton a wide basin from a cold start; near the answer (a warm start: where the point went
+	// with both bodies and along the surfaces; a cold solve handed over once its steps are small)
+	// either form converges quadratically, and without the gauge an evaluation is a few products
+	// per shape: no roots, no divisions. So plain Newton steps (NewtonOnRawLevels), and where
+	// they decline the caller's full solver decides (nothing is written before success).
+	const SuperellipseTerms &ta = a.Terms(), &tb = b.Terms();
+	if (!IntegerExponents(ta) || !IntegerExponents(tb) || !IsFinite(x))
+		return false;
+	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
+	const Pose rel = Relative(pa, pb);
+	PairDerivatives e;
+	EvaluatePair(ta, tb, rel, x, e);
+	// The multiplier given (the warm start's, off by the motion since, or the gauge solve's, off
+	// by its last step) starts Newton, which moves μ with the point. Only where it is unusable
+	// the least-squares one at the start, −∇fA·∇fB/|∇fB|² (taken always, it was no better a
+	// start, and its division lay between the first evaluation and the first step).
+	if (!(mu > 0.0) || !std::isfinite(mu))
+	{
+		const double gb2 = LengthSquared(e.gB);
+		mu = gb2 > 0.0 ? -Dot(e.gA, e.gB) / gb2 : 0.0;
+	}
+	if (!(mu > 0.0) || !std::isfinite(mu))
+		return false;
+	int iterations = 0;
+	if (!NewtonOnRawLevels(ta, tb, pa, pb, rel, options, size, x, mu, e, iterations))
+		return false;
+	// The gradients opposed (the full solver's test: unit normals within 1e-6 of −1 in their dot
+	// product), without the roots: ∇fA·∇fB < 0 and (∇fA·∇fB)² > (1 − 1e-6)²|∇fA|²|∇fB|².
+	const double ab = Dot(e.gA, e.gB), aa = LengthSquared(e.gA), bb = LengthSquared(e.gB);
+	if (!(ab < 0.0) || !(ab * ab > (1.0 - 2e-6) * aa * bb))
+		return false;
+	// The normal: A's outward and B's inward normals agree, ∇fA = −μ∇fB to rounding, and their
+	// weighted mean ∇fA − μ∇fB flips exactly when A and B swap (μ ↦ 1/μ).
+	const Vec2 sum = e.gA - mu * e.gB;
+	const double length = std::sqrt(LengthSquared(sum));
+	const Vec2 n = sum / length;
+	if (!IsFinite(n) || !(length > 0.0))
+		return false;
+	ContactAt(a, pa, b, pb, rel, x, mu, n, e, priorIterations + iterations, contact);
 	// The next warm start: the point in both frames, μ, and the slide (from f's derivatives: the
 	// curvatures and twists of the level curves, and so the slide, are the gauge's), written with
 	// the normal as it is, in A's frame, and turned to B's from the poses (kept in memory: the
 	// crossing's B-frame direction, kept alive to here, made cold contacts, which take no slide,
-	// 1 to 3 % dearer). (With one gradient length and no world normal to turn back, a warm
-	// n = 4 contact 37 instructions cheaper.)
+	// dearer).
 	if (warm)
 	{
 		RecordWarmStartLocal(*warm, pa, pb, x, e.xB, mu, nullptr);

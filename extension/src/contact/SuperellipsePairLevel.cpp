@@ -91,8 +91,8 @@ inline void Evaluate(const PairInA& p, Vec2 xi, Gauge& ga, Gauge& gb)
 
 // The residual (∇ψA + μ∇ψB, ψA − ψB) and the square of its size relative to the size of its
 // terms (the generic solver's measure, squared, so that both accept the same rounding floor: the
-// thresholds below are the generic solver's, squared). The square root was on every evaluation
-// for nothing but these comparisons (cold n = 4 to 8 contacts 1.5 to 2.5 % cheaper without it).
+// thresholds below are the generic solver's, squared). The square root would be on every
+// evaluation for nothing but these comparisons.
 // A NaN anywhere in the gauges' values or gradients makes it NaN.
 inline double Residual(const Gauge& ga, const Gauge& gb, double mu, double r[3])
 {
@@ -155,8 +155,8 @@ bool CentreLineStart(const PairInA& p, double& t)
 
 // A start for the point of the superellipse with terms t (integer exponents ≥ 3, in the pair's
 // units; a and b its semi-axes there) whose normal is along d: SupportNear(d, 0) with RootGuess's
-// roots (SupportNear's CubeRoot for n = 4, pow for n = 8, exp and log for n ≠ m were 5 % of a
-// cold contact). With e = (a·dx, b·dy) and κ = max(|ex|/n, |ey|/m), the point of the bounding
+// roots (SupportNear's CubeRoot for n = 4, pow for n = 8, exp and log for n ≠ m are a visible
+// part of a cold contact). With e = (a·dx, b·dy) and κ = max(|ex|/n, |ey|/m), the point of the bounding
 // box's side where the level curve's normal is along d is X = (|ex|/(nκ))^{1/(n−1)},
 // Y = (|ey|/(mκ))^{1/(m−1)} (Lagrange's condition with one of X, Y equal to 1). |ex|/n =
 // |dx|/gradX, so the ratio of the two is |dy|·gradX/(|dx|·gradY): one division. The point lies on
@@ -182,13 +182,9 @@ Vec2 StartSupport(const SuperellipseTerms& t, double a, double b, Vec2 d)
 // n = m; for n ≠ m, and for integer exponents, the point of B's box side with its normal along u,
 // below), scaled by s about B's centre, and the other way round for a face of B. Blocky
 // superellipses are nearly their boxes, and a corner meeting a face is the common contact: from
-// there Newton needs 3.9 iterations for n = 8 over 600 random poses where the centre-line start
-// needs 5.4 (n = 4: 4.2 against 4.9, n = 12: 3.7 against 5.7). Mixed exponents gain too (800 poses
-// like the pair bench's, cold, to the end of the contact: n = 4, m = 8 pairs 5.42 -> 4.73
-// iterations and 13 % fewer instructions; n = 4 against n = 8 5.21 -> 4.79 and 25 %; n = 3 against
-// n = 8 5.26 -> 5.31 iterations but 21 % fewer instructions, the centre line's own root search
-// being dearer than the box's supports). For rounder shapes, an ellipse among them, the centre line
-// is the better start (n = 4 against an ellipse: 4.8 against 4.5 iterations).
+// there Newton needs fewer iterations than from the centre line, for equal and for mixed
+// exponents (and where it does not, the centre line's own root search is dearer than the box's
+// supports). For rounder shapes, an ellipse among them, the centre line is the better start.
 bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double size, const PairInA& p, Vec2& xi)
 {
 	const double aA = 1.0 / p.a.invA, bA = 1.0 / p.a.invB, aB = 1.0 / p.b.invA, bB = 1.0 / p.b.invB;
@@ -211,18 +207,13 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 	const double k = scale / size; // the support points are in body units, ξ in the pair's
 	// For n ≠ m, not the support point itself but SupportNear's start for it: the point on the side
 	// of the bounding box where the level curve's normal is along the direction, no Newton step. As
-	// a start it is at least as good and cheaper (800 bench-like cold n = 4, m = 8 contacts: 4.52
-	// iterations and 5,110 instructions each, against 4.73 and 6,030 with the exact support, and
-	// 4.73 and 5,740 with three steps towards it). Integer exponents take StartSupport,
-	// SupportNear(d, 0) with guessed roots: n = 4 and (4, 8) cold contacts 4 % cheaper, n = 8
-	// 1.5 %, at the same Newton iterations (the finish's 2.78 -> 2.91 for n = 8). It takes the box
-	// side's point for n = m too. That point errs the right way: the boxes touch at the scale s,
-	// the particles inside them only at a common level above s, so the common point lies beyond B's
-	// surface scaled by s, where the box side's point is. Scaling it onto the surface (the support
-	// point) cost a chain of two or three square roots and a division, and Newton needed more steps
-	// from there: cold n = 4 4.24 -> 4.12 iterations and 327 -> 294 ns a contact (120 bench-like
-	// poses), n = 8 4.17 -> 4.09 and 344 -> 309 ns (with StartSupport's divisions folded into one,
-	// which gave the (4, 8) pairs 355 -> 347 ns).
+	// a start it is at least as good as the exact support, or steps towards it, and cheaper.
+	// Integer exponents take StartSupport, SupportNear(d, 0) with guessed roots, cheaper still at
+	// the same Newton iterations. It takes the box side's point for n = m too. That point errs the
+	// right way: the boxes touch at the scale s, the particles inside them only at a common level
+	// above s, so the common point lies beyond B's surface scaled by s, where the box side's point
+	// is. Scaling it onto the surface (the support point) costs a chain of two or three square
+	// roots and a division, and Newton needs more steps from there.
 	if (p.integer)
 		xi = face < 2 ? p.c + scale * Rotate(p.r, StartSupport(p.b, aB, bB, InvRotate(p.r, -u))) : scale * StartSupport(p.a, aA, bA, u);
 	else
@@ -233,25 +224,10 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 // Whether BoxStart is the better start for the pair: every exponent at least 3 (the shapes
 // close to their boxes).
 bool Blocky(const PairInA& p) { return std::min(std::min(p.a.n, p.a.m), std::min(p.b.n, p.b.m)) >= 3.0; }
-} // namespace
 
-LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
-                                       const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at,
-                                       SuperellipseHandOver* handOver)
+// The pair seen from A (PairInA) for a solve.
+PairInA PairOf(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb, double size)
 {
-	// The generic Newton (CommonLevelNewton.cpp: the same equations, gauge, trust region, line
-	// search and stopping rules) without what it pays for being generic: the shapes are evaluated
-	// inline from their terms, in A's body frame (A's point needs no transform, B's one rotation),
-	// the multiplier is μ itself rather than log μ (no exp per evaluation; steps are limited to
-	// the same factor e² either way), and the answer keeps what the contact's normal and points
-	// need. Its warm starts and multipliers are interchangeable with the generic solver's.
-	if (at)
-		at->valid = false;
-	if (handOver)
-		handOver->taken = false;
-	LevelResult result;
-	result.method = SolveMethod::newton;
-	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
 	PairInA p;
 	p.a = ScaledTerms(a.Terms(), size);
 	p.b = ScaledTerms(b.Terms(), size);
@@ -261,208 +237,150 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	p.q = std::min(a.LevelPower(), b.LevelPower());
 	p.invQ = 1.0 / p.q;
 	p.integer = IntegerExponents(p.a) && IntegerExponents(p.b);
+	return p;
+}
 
-	Vec2 xi;
-	double mu = 1.0;
+// The start: where the warm start's point went with both bodies' motions and the slide along the
+// surfaces, with its multiplier; cold, the boxes' contact (Blocky pairs) or the centre line's
+// point of equal levels, with μ = 0 (to be balanced from the gradients there). False where the
+// levels along the centre line vanish (coincident centres).
+bool StartOf(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb, double size,
+             const PairInA& p, const WarmStart* warm, Vec2& xi, double& mu)
+{
 	if (warm && warm->valid && warm->multiplier > 0.0 && IsFinite(warm->localPoint) && std::isfinite(warm->multiplier))
 	{
-		// Where the point went with both bodies' motions and the slide along the surfaces.
 		mu = warm->multiplier;
 		xi = WarmStartPoint(*warm, pa, pb, size) / size;
+		return true;
 	}
-	else
-	{
-		double t = 0.5;
-		if (!(Blocky(p) && BoxStart(a, b, size, p, xi)))
-		{
-			if (!CentreLineStart(p, t))
-			{
-				result.failure = "coincident centres: no common-level point between them";
-				return result;
-			}
-			xi = t * p.c;
-		}
-		mu = 0.0; // from the gradients there, below
-	}
+	mu = 0.0;
+	if (Blocky(p) && BoxStart(a, b, size, p, xi))
+		return true;
+	double t = 0.5;
+	if (!CentreLineStart(p, t))
+		return false;
+	xi = t * p.c;
+	return true;
+}
 
-	// Two evaluated points, the current one and the trial, swapped when a trial is accepted.
-	struct Point
+// An evaluated point of the solve.
+struct Point
+{
+	Vec2 xi;
+	double mu;
+	Gauge A, B;
+	double r[3];
+	double relativeSquared; // NaN where anything evaluated was not finite
+};
+
+void EvaluateAt(const PairInA& p, Point& q, Vec2 xi, double mu)
+{
+	q.xi = xi;
+	q.mu = mu;
+	Evaluate(p, xi, q.A, q.B);
+	q.relativeSquared = Residual(q.A, q.B, mu, q.r);
+}
+
+// A cold start's point, with μ balancing the gradients there, |∇ψA|/|∇ψB| (GeometricStart's).
+void EvaluateColdStart(const PairInA& p, Point& q, Vec2 xi)
+{
+	q.xi = xi;
+	Evaluate(p, xi, q.A, q.B);
+	const double ga = std::sqrt(q.A.gx * q.A.gx + q.A.gy * q.A.gy);
+	const double gb = std::sqrt(q.B.gx * q.B.gx + q.B.gy * q.B.gy);
+	q.mu = ga > 0.0 && gb > 0.0 && std::isfinite(ga / gb) ? ga / gb : 1.0;
+	q.relativeSquared = Residual(q.A, q.B, q.mu, q.r);
+}
+
+// The least-squares multiplier for a warm start's point, μ = −∇ψA·∇ψB / |∇ψB|², where it lowers
+// the residual (a stale multiplier makes Newton crawl). Not after a cold start: there it never
+// does. With c = −cos∠(∇ψA, ∇ψB) ∈ (0, 1] (μ > 0 needs it), the gradient part of the relative
+// residual is (1 − c²)/(1 + c²) at the least-squares μ and 1 − c at |∇ψA|/|∇ψB|, and
+// (1 + c)/(1 + c²) ≥ 1; the level part does not depend on μ.
+void TakeLeastSquaresMultiplier(Point& q)
+{
+	const double gb2 = q.B.gx * q.B.gx + q.B.gy * q.B.gy;
+	const double muLs = gb2 > 0.0 ? -(q.A.gx * q.B.gx + q.A.gy * q.B.gy) / gb2 : 0.0;
+	if (muLs > 0.0 && std::isfinite(muLs) && muLs != q.mu)
 	{
-		Vec2 xi;
-		double mu;
-		Gauge A, B;
 		double r[3];
-		double relativeSquared; // NaN where anything evaluated was not finite
-	};
-	auto evaluate = [&](Point& q, Vec2 at_xi, double at_mu) {
-		q.xi = at_xi;
-		q.mu = at_mu;
-		Evaluate(p, at_xi, q.A, q.B);
-		q.relativeSquared = Residual(q.A, q.B, at_mu, q.r);
-	};
-	Point points[2];
-	Point* current = &points[0];
-	Point* trial = &points[1];
-	const bool cold = mu == 0.0;
-	if (cold)
-	{
-		// μ balancing the gradients at the start, |∇ψA|/|∇ψB| (GeometricStart's).
-		current->xi = xi;
-		Evaluate(p, xi, current->A, current->B);
-		const double ga = std::sqrt(current->A.gx * current->A.gx + current->A.gy * current->A.gy);
-		const double gb = std::sqrt(current->B.gx * current->B.gx + current->B.gy * current->B.gy);
-		current->mu = ga > 0.0 && gb > 0.0 && std::isfinite(ga / gb) ? ga / gb : 1.0;
-		current->relativeSquared = Residual(current->A, current->B, current->mu, current->r);
-	}
-	else
-		evaluate(*current, xi, mu);
-	const double trust = std::max(0.5, 0.5 * Length(p.c));
-	const int cap = std::max(1, options.maxIterations);
-	double previousXi = 0.0, previousMu = 0.0; // the last full step's size in ξ and in μ/μ (0: none yet)
-	for (int it = 1; it <= cap; ++it)
-	{
-		Point& q = *current;
-		result.iterations = it;
-		if (!std::isfinite(q.relativeSquared))
+		const double relativeSquared = Residual(q.A, q.B, muLs, r);
+		if (relativeSquared < q.relativeSquared)
 		{
-			result.failure = "non-finite level value or derivative during Newton iteration";
-			return result;
-		}
-		if (it == 1 && !cold)
-		{
-			// The least-squares multiplier for the start point, μ = −∇ψA·∇ψB / |∇ψB|², where it
-			// lowers the residual (a stale multiplier makes Newton crawl). Not after a cold start:
-			// there it never does. With c = −cos∠(∇ψA, ∇ψB) ∈ (0, 1] (μ > 0 needs it), the
-			// gradient part of the relative residual is (1 − c²)/(1 + c²) at the least-squares μ
-			// and 1 − c at |∇ψA|/|∇ψB|, and (1 + c)/(1 + c²) ≥ 1; the level part does not depend
-			// on μ.
-			const double gb2 = q.B.gx * q.B.gx + q.B.gy * q.B.gy;
-			const double muLs = gb2 > 0.0 ? -(q.A.gx * q.B.gx + q.A.gy * q.B.gy) / gb2 : 0.0;
-			if (muLs > 0.0 && std::isfinite(muLs) && muLs != q.mu)
-			{
-				double r[3];
-				const double relativeSquared = Residual(q.A, q.B, muLs, r);
-				if (relativeSquared < q.relativeSquared)
-				{
-					q.mu = muLs;
-					q.relativeSquared = relativeSquared;
-					std::copy(r, r + 3, q.r);
-				}
-			}
-		}
-		// Jacobian of (∇ψA + μ∇ψB, ψA − ψB) with respect to (ξ, μ): [[H, ∇ψB], [(∇ψA − ∇ψB)ᵀ, 0]]
-		// with H = ∇²ψA + μ∇²ψB. (A Hessian that is not finite makes it singular to the solve.)
-		const double hxx = q.A.hxx + q.mu * q.B.hxx, hxy = q.A.hxy + q.mu * q.B.hxy, hyy = q.A.hyy + q.mu * q.B.hyy;
-		const double minusR[3] = {-q.r[0], -q.r[1], -q.r[2]};
-		const Solve3Result step = SolveBordered(hxx, hxy, hyy, q.B.gx, q.B.gy, q.A.gx - q.B.gx, q.A.gy - q.B.gy, minusR);
-		if (!(step.rcond > 1e-14))
-		{
-			if (q.relativeSquared < 1e-11 * 1e-11)
-				break; // solved: the Jacobian is singular only at the answer's rounding level
-			result.failure = "singular or ill-conditioned Jacobian";
-			return result;
-		}
-		double delta[3] = {step.x[0], step.x[1], step.x[2]};
-		// Quadratic convergence: after a full step δₖ, the new step δₖ₊₁ gives Newton's constant
-		// K ≈ |δₖ₊₁|/|δₖ|², and the error left after taking δₖ₊₁ is about K·|δₖ₊₁|². Where that is
-		// ten times below the tolerance, δₖ₊₁ is the last step and is taken without evaluating
-		// the shapes again: ψ + ∇ψ·δ, ∇ψ + ∇²ψ·δ, f = ψ^q (df = q·f·dψ/ψ) and ∇f = (q·f/ψ)∇ψ,
-		// exact to O(|δ|²). (The generic solver decides this one evaluation later, from the
-		// accepted step.) The estimate holds only once Newton is in its quadratic regime, so it
-		// needs the evidence of it: the residual already small (1e-6), the previous step small
-		// (1e-2 of the size), and both the point's steps and the multiplier's relative steps
-		// contracting by 4 or more, each with its own K (a point that has settled while μ still
-		// moves, or the reverse, has not converged).
-		const double stepXi = std::max(std::fabs(delta[0]), std::fabs(delta[1]));
-		const double stepMu = std::fabs(delta[2]) / q.mu;
-		auto settled = [&](double now, double before) {
-			return now <= 0.1 * options.stepTolerance ||
-			       (before > 0.0 && now < 0.25 * before && 10.0 * (now / (before * before)) * now * now <= options.stepTolerance);
-		};
-		if (q.relativeSquared <= 1e-6 * 1e-6 && previousXi > 0.0 && previousXi <= 1e-2 && settled(stepXi, previousXi) &&
-		    settled(stepMu, previousMu))
-		{
-			const double dx = delta[0], dy = delta[1];
-			q.xi = q.xi + Vec2(dx, dy);
-			q.mu += delta[2];
-			for (Gauge* g : {&q.A, &q.B})
-			{
-				const double dpsi = g->gx * dx + g->gy * dy;
-				g->gx += g->hxx * dx + g->hxy * dy;
-				g->gy += g->hxy * dx + g->hyy * dy;
-				if (g->psi > 0.0)
-				{
-					g->lambda += p.q * g->lambda * dpsi / g->psi;
-					const double k = p.q * g->lambda / (g->psi + dpsi);
-					g->fx = k * g->gx;
-					g->fy = k * g->gy;
-				}
-				g->psi += dpsi;
-			}
-			break;
-		}
-		// Trust region (the generic solver's): at most half the pair's size or of the distance
-		// between the centres in ξ, and a factor e² in μ.
-		double limit = 1.0;
-		if (stepXi > trust) limit = trust / stepXi;
-		const double up = 6.38905609893065 * q.mu, down = -0.864664716763387 * q.mu; // (e² − 1)μ, (e⁻² − 1)μ
-		if (delta[2] > up) limit = std::min(limit, up / delta[2]);
-		if (delta[2] < down) limit = std::min(limit, down / delta[2]);
-		if (handOver && limit == 1.0 && stepXi <= handOver->below && q.mu + delta[2] > 0.0)
-		{
-			// Within Newton's quadratic regime: the caller takes this step and finishes on the raw
-			// levels. The step is handed over unevaluated: the finish evaluates its end anyway, and
-			// its own tests (a first step within 5 % of the size, steps contracting as Newton's do)
-			// turn a step that was not in the regime into a full solve. (Evaluating it here first,
-			// as before 2026-12-05, cost a cold n = 4 contact one gauge evaluation in 2.8, 10 %.)
-			handOver->point = size * (q.xi + Vec2(delta[0], delta[1]));
-			handOver->multiplier = q.mu + delta[2];
-			handOver->iterations = it;
-			handOver->taken = true;
-			result.failure = "handed over to FinishSuperellipseContact";
-			return result;
-		}
-		for (double& d : delta)
-			d *= limit;
-		// Backtracking on the residual with row weights frozen at the current point.
-		const double w12 =
-			1.0 / (q.A.gx * q.A.gx + q.A.gy * q.A.gy + q.mu * q.mu * (q.B.gx * q.B.gx + q.B.gy * q.B.gy) + 1e-300);
-		const double w3 = 1.0 / (q.A.psi * q.A.psi + q.B.psi * q.B.psi + 1e-300);
-		auto merit = [&](const Point& t) { return w12 * (t.r[0] * t.r[0] + t.r[1] * t.r[1]) + w3 * t.r[2] * t.r[2]; };
-		const double merit0 = merit(q);
-		const int halvings = q.relativeSquared < 1e-9 * 1e-9 ? 3 : 40;
-		double alpha = 1.0;
-		bool accepted = false;
-		for (int k = 0; k < halvings; ++k, alpha *= 0.5)
-		{
-			evaluate(*trial, q.xi + alpha * Vec2(delta[0], delta[1]), q.mu + alpha * delta[2]);
-			if (trial->mu > 0.0 && merit(*trial) <= (1.0 - 1e-4 * alpha) * merit0) // (false for NaN)
-			{
-				accepted = true;
-				break;
-			}
-		}
-		if (!accepted)
-		{
-			if (q.relativeSquared < 1e-9 * 1e-9)
-				break; // rounding floor
-			result.failure = "line search stalled (no step lowers the residual)";
-			return result;
-		}
-		const double moved = alpha * limit * stepXi;
-		std::swap(current, trial);
-		const bool full = limit == 1.0 && alpha == 1.0;
-		if ((full && moved <= options.stepTolerance) || current->relativeSquared < 1e-15 * 1e-15)
-			break;
-		previousXi = full ? stepXi : 0.0;
-		previousMu = full ? stepMu : 0.0;
-		if (it == cap)
-		{
-			result.failure = "iteration cap reached";
-			return result;
+			q.mu = muLs;
+			q.relativeSquared = relativeSquared;
+			std::copy(r, r + 3, q.r);
 		}
 	}
-	const Point& q = *current;
+}
+
+// The last step, taken without evaluating the shapes again: ψ + ∇ψ·δ, ∇ψ + ∇²ψ·δ, f = ψ^q
+// (df = q·f·dψ/ψ) and ∇f = (q·f/ψ)∇ψ, exact to O(|δ|²).
+void TakeUnevaluatedStep(const PairInA& p, Point& q, const double delta[3])
+{
+	const double dx = delta[0], dy = delta[1];
+	q.xi = q.xi + Vec2(dx, dy);
+	q.mu += delta[2];
+	for (Gauge* g : {&q.A, &q.B})
+	{
+		const double dpsi = g->gx * dx + g->gy * dy;
+		g->gx += g->hxx * dx + g->hxy * dy;
+		g->gy += g->hxy * dx + g->hyy * dy;
+		if (g->psi > 0.0)
+		{
+			g->lambda += p.q * g->lambda * dpsi / g->psi;
+			const double k = p.q * g->lambda / (g->psi + dpsi);
+			g->fx = k * g->gx;
+			g->fy = k * g->gy;
+		}
+		g->psi += dpsi;
+	}
+}
+
+// Backtracking on the residual along δ with row weights frozen at q (the generic solver's
+// LineSearch): the first of α = 1, ½, ¼, … that lowers the merit enough, evaluated into `trial`.
+bool LineSearch(const PairInA& p, const Point& q, const double delta[3], Point& trial, double& alpha)
+{
+	const double w12 = 1.0 / (q.A.gx * q.A.gx + q.A.gy * q.A.gy + q.mu * q.mu * (q.B.gx * q.B.gx + q.B.gy * q.B.gy) + 1e-300);
+	const double w3 = 1.0 / (q.A.psi * q.A.psi + q.B.psi * q.B.psi + 1e-300);
+	auto merit = [&](const Point& t) { return w12 * (t.r[0] * t.r[0] + t.r[1] * t.r[1]) + w3 * t.r[2] * t.r[2]; };
+	const double merit0 = merit(q);
+	const int halvings = q.relativeSquared < 1e-9 * 1e-9 ? 3 : 40;
+	alpha = 1.0;
+	for (int k = 0; k < halvings; ++k, alpha *= 0.5)
+	{
+		EvaluateAt(p, trial, q.xi + alpha * Vec2(delta[0], delta[1]), q.mu + alpha * delta[2]);
+		if (trial.mu > 0.0 && merit(trial) <= (1.0 - 1e-4 * alpha) * merit0) // (false for NaN)
+			return true;
+	}
+	return false;
+}
+
+// How far an evaluated point is from solving the conditions (ResidualOfConditions): B's body
+// coordinates there, ξ − c turned, are rounded to a part in 1e16 of the larger of |ξ| and |c|,
+// and c itself to a part in 1e16 of the centres' world coordinates.
+ConditionsResidual ResidualAt(const PairInA& p, const Point& q, const Pose& pa, const Pose& pb, double size)
+{
+	const double worldReach = std::max(Length(pa.p), Length(pb.p)) / size;
+	const double delta = std::numeric_limits<double>::epsilon() * std::max({Length(q.xi), Length(p.c), worldReach});
+	return ResidualOfConditions(q.A.psi, q.B.psi, Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), Sym22{q.A.hxx, q.A.hxy, q.A.hyy},
+	                            Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, delta);
+}
+
+// Whether an evaluated point solves the conditions to what double precision allows
+// (ConditionsHold's standard).
+bool Solved(const PairInA& p, const Point& q, const Pose& pa, const Pose& pb, double size)
+{
+	if (ConditionsWithin(q.A.psi, q.B.psi, Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), 1e-11, 1e-11))
+		return true; // (the common case, before the roots of the reach)
+	return ResidualAt(p, q, pa, pb, size).Within(1e-11, 1e-10, p.q);
+}
+
+// The answer at the solved point q (opposed gradients and a positive multiplier, else the
+// failure), and what the contact needs from it in `at`.
+LevelResult Answer(const Pose& pa, double size, const Point& q, const WarmStart* warm, SuperellipsePairPoint* at,
+                   LevelResult result)
+{
 	const Vec2 nA = Normalize(Vec2(q.A.gx, q.A.gy)), nB = Normalize(Vec2(q.B.gx, q.B.gy));
 	if (!(Dot(nA, nB) < -1.0 + 1e-6))
 	{
@@ -493,6 +411,146 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		at->valid = IsFinite(at->gradA) && IsFinite(at->gradB);
 	}
 	return result;
+}
+} // namespace
+
+LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                                       const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at,
+                                       SuperellipseHandOver* handOver)
+{
+	// The generic Newton (CommonLevelNewton.cpp: the same equations, gauge, trust region, line
+	// search and stopping rules) without what it pays for being generic: the shapes are evaluated
+	// inline from their terms, in A's body frame (A's point needs no transform, B's one rotation),
+	// the multiplier is μ itself rather than log μ (no exp per evaluation; steps are limited to
+	// the same factor e² either way), and the answer keeps what the contact's normal and points
+	// need. Its warm starts and multipliers are interchangeable with the generic solver's.
+	if (at)
+		at->valid = false;
+	if (handOver)
+		handOver->taken = false;
+	LevelResult result;
+	result.method = SolveMethod::newton;
+	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
+	const PairInA p = PairOf(a, pa, b, pb, size);
+	Vec2 xi;
+	double mu = 1.0;
+	if (!StartOf(a, pa, b, pb, size, p, warm, xi, mu))
+	{
+		result.failure = "coincident centres: no common-level point between them";
+		return result;
+	}
+	// Two evaluated points, the current one and the trial, swapped when a trial is accepted.
+	Point points[2];
+	Point* current = &points[0];
+	Point* trial = &points[1];
+	const bool cold = mu == 0.0;
+	if (cold)
+		EvaluateColdStart(p, *current, xi);
+	else
+		EvaluateAt(p, *current, xi, mu);
+	const double trust = std::max(0.5, 0.5 * Length(p.c));
+	const int cap = std::max(1, options.maxIterations);
+	double previousXi = 0.0, previousMu = 0.0; // the last full step's size in ξ and in μ/μ (0: none yet)
+	int forced = 0;                           // full steps taken where the line search stalled
+	for (int it = 1; it <= cap; ++it)
+	{
+		Point& q = *current;
+		result.iterations = it;
+		if (!std::isfinite(q.relativeSquared))
+		{
+			result.failure = "non-finite level value or derivative during Newton iteration";
+			return result;
+		}
+		if (it == 1 && !cold)
+			TakeLeastSquaresMultiplier(q);
+		// Jacobian of (∇ψA + μ∇ψB, ψA − ψB) with respect to (ξ, μ): [[H, ∇ψB], [(∇ψA − ∇ψB)ᵀ, 0]]
+		// with H = ∇²ψA + μ∇²ψB. (A Hessian that is not finite makes it singular to the solve.)
+		const double hxx = q.A.hxx + q.mu * q.B.hxx, hxy = q.A.hxy + q.mu * q.B.hxy, hyy = q.A.hyy + q.mu * q.B.hyy;
+		const double minusR[3] = {-q.r[0], -q.r[1], -q.r[2]};
+		const double dx = q.A.gx - q.B.gx, dy = q.A.gy - q.B.gy;
+		const Solve3Result step = SolveBordered(hxx, hxy, hyy, q.B.gx, q.B.gy, dx, dy, minusR);
+		if (!BorderedStepUsable(step.rcond, hxx, hxy, hyy, q.B.gx, q.B.gy, dx, dy))
+		{
+			if (q.relativeSquared < 1e-11 * 1e-11 || Solved(p, q, pa, pb, size))
+				break; // solved: the Jacobian is singular only at the answer's rounding level
+			result.failure = "singular or ill-conditioned Jacobian";
+			return result;
+		}
+		double delta[3] = {step.x[0], step.x[1], step.x[2]};
+		// Quadratic convergence: after a full step δₖ, the new step δₖ₊₁ gives Newton's constant
+		// K ≈ |δₖ₊₁|/|δₖ|², and the error left after taking δₖ₊₁ is about K·|δₖ₊₁|². Where that is
+		// ten times below the tolerance, δₖ₊₁ is the last step and is taken without evaluating
+		// the shapes again (TakeUnevaluatedStep; the generic solver decides this one evaluation
+		// later, from the accepted step). The estimate holds only once Newton is in its quadratic
+		// regime, so it needs the evidence of it: the residual already small (1e-6), the previous
+		// step small (1e-2 of the size), and both the point's steps and the multiplier's relative
+		// steps contracting by 4 or more, each with its own K (a point that has settled while μ
+		// still moves, or the reverse, has not converged).
+		const double stepXi = std::max(std::fabs(delta[0]), std::fabs(delta[1]));
+		const double stepMu = std::fabs(delta[2]) / q.mu;
+		auto settled = [&](double now, double before) {
+			return now <= 0.1 * options.stepTolerance ||
+			       (before > 0.0 && now < 0.25 * before && 10.0 * (now / (before * before)) * now * now <= options.stepTolerance);
+		};
+		if (q.relativeSquared <= 1e-6 * 1e-6 && previousXi > 0.0 && previousXi <= 1e-2 && settled(stepXi, previousXi) &&
+		    settled(stepMu, previousMu))
+		{
+			TakeUnevaluatedStep(p, q, delta);
+			break;
+		}
+		// Trust region (the generic solver's): at most half the pair's size or of the distance
+		// between the centres in ξ, and a factor e² in μ.
+		double limit = 1.0;
+		if (stepXi > trust) limit = trust / stepXi;
+		const double up = 6.38905609893065 * q.mu, down = -0.864664716763387 * q.mu; // (e² − 1)μ, (e⁻² − 1)μ
+		if (delta[2] > up) limit = std::min(limit, up / delta[2]);
+		if (delta[2] < down) limit = std::min(limit, down / delta[2]);
+		if (handOver && limit == 1.0 && stepXi <= handOver->below && q.mu + delta[2] > 0.0)
+		{
+			// Within Newton's quadratic regime: the caller takes this step and finishes on the raw
+			// levels. The step is handed over unevaluated: the finish evaluates its end anyway, and
+			// its own tests (a first step within 5 % of the size, steps contracting as Newton's do,
+			// the conditions at its end) turn a step that was not in the regime into a full solve.
+			handOver->point = size * (q.xi + Vec2(delta[0], delta[1]));
+			handOver->multiplier = q.mu + delta[2];
+			handOver->iterations = it;
+			handOver->taken = true;
+			result.failure = "handed over to FinishSuperellipseContact";
+			return result;
+		}
+		for (double& d : delta)
+			d *= limit;
+		double alpha = 1.0;
+		if (!LineSearch(p, q, delta, *trial, alpha))
+		{
+			if (Solved(p, q, pa, pb, size))
+				break; // rounding floor
+			// Near the solution the full step, as the generic solver takes it.
+			if (!(forced < 2 && ResidualAt(p, q, pa, pb, size).Within(1e-4, 1e-4, p.q)))
+			{
+				result.failure = "line search stalled (no step lowers the residual)";
+				return result;
+			}
+			++forced;
+			alpha = 1.0;
+			EvaluateAt(p, *trial, q.xi + Vec2(delta[0], delta[1]), q.mu + delta[2]);
+		}
+		const double moved = alpha * limit * stepXi;
+		std::swap(current, trial);
+		const bool full = limit == 1.0 && alpha == 1.0;
+		// A step below the tolerance ends the solve only at a solution (the generic solver's rule).
+		if ((full && moved <= options.stepTolerance && Solved(p, *current, pa, pb, size)) ||
+		    current->relativeSquared < 1e-15 * 1e-15)
+			break;
+		previousXi = full ? stepXi : 0.0;
+		previousMu = full ? stepMu : 0.0;
+		if (it == cap)
+		{
+			result.failure = "iteration cap reached";
+			return result;
+		}
+	}
+	return Answer(pa, size, *current, warm, at, result);
 }
 
 } // namespace b2a
