@@ -120,6 +120,17 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 /// Shorthand: an analytic fixture at the body origin with the given density.
 b2Fixture* CreateAnalyticFixture(b2Body* body, ShapePtr shape, float density);
 
+/// Shorthand: an analytic fixture at the body origin with the given density, friction and
+/// restitution (the rest of b2FixtureDef's defaults), as b2Body::CreateFixture(shape, density)
+/// is for Box2D's shapes with friction and restitution set afterwards. Throws as the full form.
+b2Fixture* CreateAnalyticFixture(b2Body* body, ShapePtr shape, float density, float friction, float restitution = 0.0f);
+
+/// Shorthand: an analytic fixture as `analytic` says (shape, local pose, patch and solver
+/// options) with the given density, friction and restitution (the rest of b2FixtureDef's
+/// defaults). Throws as the full form.
+b2Fixture* CreateAnalyticFixture(b2Body* body, const AnalyticFixtureDef& analytic, float density, float friction,
+                                 float restitution = 0.0f);
+
 /// The analytic shape of a fixture, or null for a plain Box2D fixture.
 const Shape* GetAnalyticShape(const b2Fixture* fixture);
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "b2analytic/AnalyticFixture.h"
+#include "b2analytic/Box2DConversions.h"
 
 #include <box2d/b2_polygon_shape.h>
 
@@ -69,16 +70,6 @@ static_assert(sizeof(void*) <= sizeof(b2Vec2), "the data pointer must fit in one
 /// Box2D's mass data of `shape` placed at `local` in its body's frame with `density`: what the
 /// proxy's ComputeMass gives (CreateAnalyticFixture checks it before Box2D sees it).
 b2MassData AnalyticMassData(const Shape& shape, const Pose& local, float density);
-
-/// Pose of a Box2D transform, in double precision.
-inline Pose ToPose(const b2Transform& xf)
-{
-	Pose p;
-	p.p = Vec2(xf.p.x, xf.p.y);
-	p.q.c = xf.q.c;
-	p.q.s = xf.q.s;
-	return p;
-}
 
 /// Composition: body pose times a local pose.
 inline Pose Compose(const Pose& body, const Pose& local)
