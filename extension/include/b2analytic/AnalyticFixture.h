@@ -93,14 +93,15 @@ struct AnalyticFixtureDef
 	ShapePtr shape;
 	/// Pose of the shape in the body's frame (default: at the body origin, unrotated).
 	Pose local;
-	/// Surfaces within this distance of each other's extreme count as a flat patch and get two
-	/// manifold points (see BuildContactManifold). Default: half of Box2D's linear slop.
+	/// A face of the particle (where two particles touching face to face get two manifold
+	/// points, see BuildContactManifold) is the arc within this distance of the tangent at its
+	/// flattest point. Default: half of Box2D's linear slop.
 	double patchTolerance = 0.5 * b2_linearSlop;
-	/// A flat patch gets two points only when it is wider than this fraction of the particle's
-	/// bounding radius; narrower ones are curved contacts and keep one point (see
-	/// BuildContactManifold). Blocky superellipses (n ≥ 4) have patches wider than half their
-	/// size, ellipses of aspect up to about 10 narrower than a quarter.
-	double patchMinWidth = 0.25;
+	/// Faces that overlap by less than this fraction of the particle's bounding radius (or than
+	/// twice patchTolerance, the slop by default) get one point (see BuildContactManifold). The
+	/// default, 0, gives two points wherever two faces overlap by more than the slop; a curved
+	/// contact gets one regardless.
+	double patchMinWidth = 0.0;
 	/// Options of the contact solvers.
 	SolverOptions solver;
 };
