@@ -4,6 +4,7 @@
 #include "b2analytic/AnalyticFixture.h"
 #include "b2analytic/Box2DConversions.h"
 
+#include <box2d/b2_collision.h>
 #include <box2d/b2_polygon_shape.h>
 
 #include <atomic>
@@ -22,6 +23,12 @@ struct AnalyticFixtureData
 	double patchTolerance = 0.0;
 	double patchMinWidth = 0.0; // absolute: the fraction times the bounding radius
 	SolverOptions solver;
+	// The last box ComputeAABB gave and its transform: Box2D asks each moving body's fixtures for
+	// the boxes at its last and new transforms every step (b2Fixture::Synchronize), so the last
+	// is asked again. Box2D calls it from its own thread only (never from PrepareContacts').
+	b2Transform lastTransform;
+	b2AABB lastBox;
+	bool hasLastBox = false;
 };
 
 /// A b2PolygonShape whose virtual functions answer for the analytic shape, and whose vertices
@@ -54,6 +61,8 @@ public:
 
 	/// The shared analytic data.
 	const AnalyticFixtureData& Data() const { return *m_dataPointer(); }
+	/// The same, for the box cache.
+	AnalyticFixtureData& MutableData() const { return *m_dataPointer(); }
 	/// World pose of the analytic shape for a body transform.
 	Pose WorldPose(const b2Transform& transform) const;
 	/// The proxy if `shape` is one, else null.
