@@ -4,6 +4,8 @@
 #include "b2analytic/ContactResult.h"
 #include "b2analytic/Shape.h"
 
+#include <limits>
+
 namespace b2a
 {
 
@@ -37,13 +39,18 @@ struct ContactManifold
 	ManifoldPoint points[2]; ///< the points
 };
 
-/// The faces a contact touched last time (polar angles in each shape's body frame: the face's
-/// flattest point, then its two ends), so that the next step finds them again without a search
-/// while the contact stays on them. Keep one per persistent contact.
+/// The faces a contact found last time (polar angles in each shape's body frame: the face's
+/// flattest point, then its two ends), so that the next step takes them again without a search
+/// while the contact stays on them; and where the contact was on none. Keep one per persistent
+/// contact.
 struct ManifoldCache
 {
 	double faceA[3] = {0.0, 0.0, 0.0}; ///< A's face
 	double faceB[3] = {0.0, 0.0, 0.0}; ///< B's face
+	/// Polar angle of A's contact point where it was found on no face (NaN: none): no search
+	/// until the point has moved 0.01 rad from it.
+	double offFaceA = std::numeric_limits<double>::quiet_NaN();
+	double offFaceB = std::numeric_limits<double>::quiet_NaN(); ///< the same for B
 	bool validA = false;               ///< faceA holds a face
 	bool validB = false;               ///< faceB holds a face
 };
