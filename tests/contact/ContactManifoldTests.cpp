@@ -215,3 +215,59 @@ TEST_CASE("BuildContactManifold: curved contacts keep one point; a needle lying 
 		CHECK(BuildContactManifold(c, ManifoldSide{s.get(), pa}, ManifoldSide{s.get(), pb}, kTol, 0.0).count == 1);
 	}
 }
+
+TEST_CASE("BuildContactManifold: a heart upside down on a floor stands on both lobes")
+{
+	// The heart's lobes, upside down, are its body frame's highest points either side of the
+	// axis: y = r(θ) sin θ at its largest over θ in (0, π/2), r(θ) the surface's radius from the
+	// heart's polynomial (x² + y² − α)³ = x² y³ (bisection in long double), and its mirror image.
+	const double alpha = 0.2;
+	auto radius = [&](LD theta) {
+		LD lo = 0.0L, hi = 3.0L * std::sqrt(LD(alpha));
+		for (int it = 0; it < 200; ++it)
+		{
+			const LD r = 0.5L * (lo + hi), x = r * std::cos(theta), y = r * std::sin(theta);
+			const LD w = x * x + y * y - alpha;
+			(w * w * w - x * x * y * y * y <= 0.0L ? lo : hi) = r;
+		}
+		return lo;
+	};
+	LD a = 0.01L, b = 0.5L * kPi; // golden-section search for the largest r sin θ
+	for (int it = 0; it < 200; ++it)
+	{
+		const LD m1 = a + 0.382L * (b - a), m2 = a + 0.618L * (b - a);
+		if (radius(m1) * std::sin(m1) < radius(m2) * std::sin(m2))
+			a = m1;
+		else
+			b = m2;
+	}
+	const LD top = 0.5L * (a + b), xTop = radius(top) * std::cos(top), yTop = radius(top) * std::sin(top);
+	const ShapePtr heart = MakeHeart(alpha);
+	const Pose pose(Vec2(0.3, double(yTop) - 3e-3), kPi); // both lobes 3 mm below the floor's line
+	const Vec2 floor[2] = {Vec2(-5.0, 0.0), Vec2(5.0, 0.0)};
+	const ContactResult c = ComputePolygonContact(*heart, pose, floor, 2, Pose());
+	REQUIRE(c.Ok());
+	ManifoldSide sa;
+	sa.vertices = floor;
+	sa.count = 2;
+	const ContactManifold m = BuildContactManifold(FlipContact(c), sa, ManifoldSide{heart.get(), pose}, kTol, 0.0);
+	REQUIRE(m.count == 2);
+	CHECK(m.normal.y == doctest::Approx(1.0).epsilon(1e-12));
+	// (The lobes' ends in order along the floor's tangent, −x: the right one first.)
+	const Vec2 ends[2] = {Vec2(0.3 + double(xTop), -3e-3), Vec2(0.3 - double(xTop), -3e-3)};
+	for (int k = 0; k < 2; ++k)
+	{
+		CAPTURE(k);
+		CHECK(m.points[k].id == k);
+		CHECK(std::fabs(m.points[k].pointB.x - ends[k].x) < 1e-6); // (the lobe is flat there: x to √ of the depth's tolerance)
+		CHECK(std::fabs(m.points[k].pointB.y - ends[k].y) < 1e-9);
+		CHECK(m.points[k].separation == doctest::Approx(-3e-3).epsilon(1e-6));
+	}
+	// Lifted so that one lobe alone touches (tilted), the manifold is that lobe's point.
+	const Pose tilted(Vec2(0.3, double(yTop) - 3e-3), kPi + 0.02);
+	const ContactResult d = ComputePolygonContact(*heart, tilted, floor, 2, Pose());
+	REQUIRE(d.Ok());
+	const ContactManifold one = BuildContactManifold(FlipContact(d), sa, ManifoldSide{heart.get(), tilted}, kTol, 0.0);
+	REQUIRE(one.count == 1);
+	CHECK(one.points[0].separation == doctest::Approx(d.separation).epsilon(1e-6));
+}

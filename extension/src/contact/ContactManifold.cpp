@@ -22,6 +22,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace b2a
 {
@@ -315,6 +317,71 @@ bool LowestAlong(const ManifoldSide& b, Vec2 p, Vec2 n, Vec2& out)
 	out = p + best * n;
 	return true;
 }
+
+// A non-convex particle B against A's face: its surface's lowest points along the face normal in
+// each of its lobes (a heart upside down on a floor stands on both lobes). The candidates are the
+// local minima of the depth below A's face plane among B's cached surface samples, over A's face;
+// each is refined between its neighbours (Brent's method on the polar angle, to 1e-10 rad) and
+// kept where it lies at or below the plane. The two deepest, at least twice the tolerance apart
+// along the face, become the points, ids by their order along it. A single point (one lobe)
+// is the lobe's lowest point; where none touches, the contact's own point stays.
+int LobesOnFace(const Face& fa, const ManifoldSide& b, double tol, double radii, ManifoldPoint out[2])
+{
+	const Shape& shape = *b.shape;
+	const SurfaceSamples& samples = shape.SamplesRef();
+	const int count = samples.Count();
+	const Vec2 n = fa.normal, t = Perp(n);
+	auto along = [&](Vec2 x) { return Dot(x - fa.centre, t); };
+	const double e0 = along(fa.ends[0]), e1 = along(fa.ends[1]);
+	const double lo = std::min(e0, e1), hi = std::max(e0, e1);
+	std::vector<double> depth(size_t(count), 0.0);
+	for (int i = 0; i < count; ++i)
+		depth[size_t(i)] = Dot(ToWorld(b.pose, samples.point[size_t(i)]) - fa.centre, n);
+	ManifoldPoint best[2];
+	int found = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		const double d = depth[size_t(i)];
+		if (!(d <= depth[size_t((i + count - 1) % count)] && d < depth[size_t((i + 1) % count)]) || d > tol + 2.0 * samples.maxDeviation)
+			continue;
+		double a0, a1;
+		samples.NeighbourAngles(i, a0, a1);
+		auto height = [&](double theta) { return Dot(ToWorld(b.pose, shape.SurfacePoint(theta)) - fa.centre, n); };
+		const ScalarResult m = MinimizeBrent(height, a0, a1, 1e-10, 1e-12, 60);
+		const Vec2 q = ToWorld(b.pose, shape.SurfacePoint(m.x));
+		const double sep = m.fx - radii, s = along(q);
+		if (!(sep <= 0.0) || s < lo || s > hi)
+			continue;
+		// Keep the two deepest lobes; a minimum within twice the tolerance of a kept one is the
+		// same lobe's (samples on either side of its bottom).
+		const ManifoldPoint p{q, sep, 0};
+		int same = -1;
+		for (int k = 0; k < found; ++k)
+			if (std::fabs(along(best[k].pointB) - s) <= 2.0 * tol)
+				same = k;
+		if (same >= 0)
+		{
+			if (sep < best[same].separation)
+				best[same] = p;
+		}
+		else if (found < 2)
+			best[found++] = p;
+		else
+		{
+			const int shallower = best[0].separation > best[1].separation ? 0 : 1;
+			if (sep < best[shallower].separation)
+				best[shallower] = p;
+		}
+	}
+	if (found == 2 && along(best[0].pointB) > along(best[1].pointB))
+		std::swap(best[0], best[1]);
+	for (int k = 0; k < found; ++k)
+	{
+		out[k] = best[k];
+		out[k].id = found == 2 ? k : 0;
+	}
+	return found;
+}
 } // namespace
 
 ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide& a, const ManifoldSide& b, double tol,
@@ -334,6 +401,14 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 	const Face fa = SideFace(a, c.pointA, c.normal, tol, cache->faceA, cache->validA, cache->offFaceA);
 	if (!fa.valid)
 		return m;
+	if (b.shape && !b.shape->IsConvex() && !b.point)
+	{
+		ContactManifold lobes;
+		lobes.normal = fa.normal;
+		lobes.pointA = fa.centre;
+		lobes.count = LobesOnFace(fa, b, tol, radii, lobes.points);
+		return lobes.count > 0 ? lobes : m;
+	}
 	const Face fb = SideFace(b, c.pointB, -c.normal, tol, cache->faceB, cache->validB, cache->offFaceB);
 	if (!fb.valid)
 		return m;
