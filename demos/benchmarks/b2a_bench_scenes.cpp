@@ -46,7 +46,7 @@ velocity and 3 position iterations, sleeping off), each at every particle count:
            Measured as the packing is, while the layer settles.
 Each scene runs twice from the same lattice (same sizes, orientations and places): with
 analytic fixtures, and with plain Box2D b2PolygonShapes of 8 vertices on the same surfaces
-(InscribedPolygon: the outline inscribed; same density, friction and restitution; Box2D's
+(MakeInscribedPolygon: the outline inscribed; same density, friction and restitution; Box2D's
 skin b2_polygonRadius). Both run the same steps; the window's steps are timed with
 b2World::GetProfile() (milliseconds): step is the median over the window, collide, solve
 (broadphase is part of it) and solveTOI are means (collide and solve also as medians in the
@@ -296,7 +296,7 @@ Json PolygonCheck(const GranularConfig& config)
 	for (const ParticleState& p : scene.SaveState())
 	{
 		const Shape& shape = *p.shape;
-		const b2PolygonShape polygon = InscribedPolygon(shape, kPolygonVertices);
+		const b2PolygonShape polygon = MakeInscribedPolygon(shape, kPolygonVertices);
 		for (int32 k = 0; k < polygon.m_count; ++k)
 		{
 			const Vec2 v(polygon.m_vertices[k].x, polygon.m_vertices[k].y);

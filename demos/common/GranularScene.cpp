@@ -116,7 +116,7 @@ void GranularScene::AddParticle(ShapePtr shape, const Pose& pose)
 	pf.restitutionThreshold = 1000.0f;
 	if (c.polygonVertices > 0)
 	{
-		const b2PolygonShape polygon = InscribedPolygon(*shape, c.polygonVertices);
+		const b2PolygonShape polygon = MakeInscribedPolygon(*shape, c.polygonVertices);
 		pf.shape = &polygon;
 		body->CreateFixture(&pf);
 	}
@@ -140,27 +140,6 @@ GranularConfig BeverlooEllipses()
 	c.friction = 0.5;
 	c.wallFriction = 0.5;
 	return c;
-}
-
-b2PolygonShape InscribedPolygon(const Shape& shape, int vertices)
-{
-	if (vertices < 3 || vertices > b2_maxPolygonVertices)
-		throw InvalidParameter("InscribedPolygon", "vertices", "must be in [3, " + std::to_string(b2_maxPolygonVertices) + "]",
-		                       vertices);
-	// Vertex k at the polar angle of (a cos t, b sin t), t = 2πk/N, on the extents a, b along the
-	// body axes: an affine image of the regular N-gon, which an affine map takes from the circle
-	// to the ellipse (hence largest area there).
-	const double a = shape.Support(Vec2(1.0, 0.0)).x, b = shape.Support(Vec2(0.0, 1.0)).y;
-	b2Vec2 points[b2_maxPolygonVertices];
-	for (int k = 0; k < vertices; ++k)
-	{
-		const double t = 2.0 * kPi * k / vertices;
-		const Vec2 p = shape.SurfacePoint(std::atan2(b * std::sin(t), a * std::cos(t)));
-		points[k].Set(float(p.x), float(p.y));
-	}
-	b2PolygonShape polygon;
-	polygon.Set(points, vertices);
-	return polygon;
 }
 
 Pose GranularScene::ParticlePose(size_t i) const

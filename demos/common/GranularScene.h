@@ -4,6 +4,7 @@
 #include "DemoCommon.h"
 
 #include "b2analytic/AnalyticFixture.h"
+#include "b2analytic/Box2DConversions.h"
 #include "b2analytic/b2analytic.h"
 
 #include <box2d/box2d.h>
@@ -38,7 +39,7 @@ struct GranularConfig
 	int positionIterations = 3;    ///< Box2D position iterations
 	std::uint64_t seed = 1;        ///< random seed (sizes, orientations, placement jitter)
 	/// 0: analytic particles. 3 to b2_maxPolygonVertices: each particle a plain Box2D polygon
-	/// with this many vertices on the same shape's surface (InscribedPolygon), the baseline the
+	/// with this many vertices on the same shape's surface (MakeInscribedPolygon), the baseline the
 	/// benchmarks compare against; sizes, orientations and placement are the same.
 	int polygonVertices = 0;
 	/// Threads that compute the analytic contacts before each step (b2a::PrepareContacts);
@@ -49,12 +50,6 @@ struct GranularConfig
 /// The Beverloo demo's particles (after the paper's section 4.3): ellipses of 2 × 0.66 mm, sizes
 /// within ±5 %, friction 0.5 on particles, floor and walls; the container is the caller's.
 GranularConfig BeverlooEllipses();
-
-/// A Box2D polygon with `vertices` (3 to b2_maxPolygonVertices) points on the shape's own
-/// surface: the polar directions of an affine-regular polygon on the shape's axis extents
-/// (for an ellipse, the inscribed polygon of largest area; for a superellipse of exponent 4,
-/// the 8-gon takes its four corners). Box2D adds its usual skin (b2_polygonRadius).
-b2PolygonShape InscribedPolygon(const Shape& shape, int vertices);
 
 /// Energies of the particles (μJ for g, mm, s: 1 g·mm²/s² = 1e-9 J; reported as is).
 struct Energies

@@ -4,6 +4,7 @@
 #include "common/GranularScene.h"
 
 #include "b2analytic/AnalyticFixture.h"
+#include "b2analytic/Box2DConversions.h"
 
 #include <GLFW/glfw3.h>
 
@@ -338,7 +339,7 @@ void Sample::SwitchToPolygon(b2Fixture* f)
 	def.filter = f->GetFilterData();
 	def.isSensor = f->IsSensor();
 	def.userData = f->GetUserData();
-	b2PolygonShape polygon = demo::InscribedPolygon(*rec->shape, m_polygonVertices);
+	b2PolygonShape polygon = MakeInscribedPolygon(*rec->shape, m_polygonVertices);
 	b2Vec2 v[b2_maxPolygonVertices];
 	const b2Transform local(lp, b2Rot(float(rec->local.q.Angle())));
 	for (int32 i = 0; i < polygon.m_count; ++i)

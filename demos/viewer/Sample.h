@@ -90,7 +90,7 @@ public:
 	b2Body* Bomb() const { return m_bomb; }
 
 	/// Switch every analytic fixture to a Box2D polygon with `vertices` corners on its surface
-	/// (InscribedPolygon, the benchmarks' baseline), in place: bodies, poses and velocities stay.
+	/// (MakeInscribedPolygon, the benchmarks' baseline), in place: bodies, poses and velocities stay.
 	/// Switching back restores the analytic fixtures with their shapes and settings.
 	void SwitchToPolygons(bool polygons, int vertices = 8);
 	/// True while switched to polygons.

@@ -84,9 +84,10 @@ TEST_CASE("fast particles do not pass through thin static walls")
 					deepest = std::max(deepest, WorldSupport(s, GetAnalyticPose(p->GetFixtureList()), Vec2(1.0, 0.0)).x);
 				}
 				CHECK(deepest < 0.5 * s.BoundingRadius() + 0.1);
-				// A second later the whole particle is back on the near side, moving away.
+				// A second later the whole particle is back on the near side, moving away or at rest
+				// against the wall (a heart that came to lie on both lobes: 2e-7 m/s left over).
 				CHECK(WorldSupport(s, GetAnalyticPose(p->GetFixtureList()), Vec2(1.0, 0.0)).x < 0.0);
-				CHECK(p->GetLinearVelocity().x <= 0.0f);
+				CHECK(p->GetLinearVelocity().x <= 1e-5f);
 				++thrown;
 			}
 	CHECK(thrown == 60);

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -173,6 +174,31 @@ TEST_CASE("b2a_demo_beverloo: in the quick run the flow rate grows with the outl
 	CHECK(s["r2"].get<double>() > 0.9);
 	for (const char* f : {"flow.csv", "beverloo.svg", "packing.svg"})
 		CHECK(Exists(std::string("demo_out/beverloo/") + f));
+}
+
+TEST_CASE("b2a_demo_game: the pyramid as stiff as the boxes', the ramp at the textbook rates, every ray on a surface")
+{
+	const json s = RunDemo(B2A_DEMO_GAME, "game");
+	const json& pyramid = s["pyramid"];
+	CHECK(pyramid["asleep_at_s"]["superellipses"].get<double>() > 0.0);
+	CHECK(pyramid["asleep_ratio"].get<double>() > 0.0);
+	CHECK(pyramid["asleep_ratio"].get<double>() <= 1.5);
+	CHECK(pyramid["top_largest_difference_after_1s_m"].get<double>() < 0.05);
+	for (const json& b : s["ramp"]["bodies"])
+	{
+		const double a = b["acceleration_m_s2"], expected = b["textbook_m_s2"];
+		CHECK(std::fabs(a - expected) <= 0.01 * std::max(expected, 1.0)); // the block that sticks: |a| < 0.01
+	}
+	const json& rays = s["bucket"]["ray_casts"];
+	CHECK(rays["hits"].get<int>() == rays["rays"].get<int>()); // the pile fills the bucket's width
+	CHECK(rays["hit_points_off_the_surface"] == 0);
+	CHECK(rays["rays_through_a_particle_before_the_hit"] == 0);
+	CHECK(s["bucket"]["asleep_at_s"]["polygons8"].get<double>() > 0.0);
+	for (const char* f : {"pyramid.svg", "pyramid_boxes.svg", "pyramid_top.svg", "ramp.svg", "bucket.svg", "bucket_polygons.svg",
+	                      "bucket_awake.svg"})
+		CHECK(Exists(std::string("demo_out/game/") + f));
+	const std::string exe = B2A_DEMO_GAME;
+	CHECK(WEXITSTATUS(std::system(("\"" + exe + "\" --family cubes > /dev/null 2>&1").c_str())) == 2);
 }
 
 TEST_CASE("demos reject bad options with a message and exit status 2")

@@ -108,8 +108,8 @@ void RunPolygon(FuzzInput& in, const Shape& a, const Pose& pa, double scale, boo
 	sb.count = count;
 	const double tol = in.Positive(1e-4, 0.1) * scale, minWidth = in.Uniform(0.0, 1.0) * scale;
 	const ContactManifold m = BuildContactManifold(c, sa, sb, tol, minWidth);
-	// Twice more through one cache, as on consecutive steps: the second call starts its face
-	// search from the first's ends and slopes.
+	// Twice more through one cache, as on consecutive steps: the second call takes the faces the
+	// first found.
 	ManifoldCache cache;
 	const ContactManifold first = BuildContactManifold(c, sa, sb, tol, minWidth, 0.0, &cache);
 	const ContactManifold second = BuildContactManifold(c, sa, sb, tol, minWidth, 0.0, &cache);

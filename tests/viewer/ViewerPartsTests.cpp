@@ -246,7 +246,7 @@ TEST_CASE("comparison: analytic particles switched in place to Box2D 8-gons and 
 		const b2PolygonShape* p = static_cast<const b2PolygonShape*>(f->GetShape());
 		// Eight corners; a heart's hull drops the one in its notch.
 		CHECK(p->m_count == (shapes[i]->IsConvex() ? 8 : 7));
-		// Its corners lie on the analytic surface (InscribedPolygon), in the shape's frame.
+		// Its corners lie on the analytic surface (MakeInscribedPolygon), in the shape's frame.
 		for (int32 k = 0; k < p->m_count; ++k)
 		{
 			const Vec2 v(p->m_vertices[k].x, p->m_vertices[k].y);

@@ -66,14 +66,15 @@ struct AnalyticFixtureDef
 	ShapePtr shape;
 	/// Pose of the shape in the body's frame (default: at the body origin, unrotated).
 	Pose local;
-	/// Surfaces within this distance of each other's extreme count as a flat patch and get two
-	/// manifold points (see BuildContactManifold). Default: half of Box2D's linear slop.
+	/// A face of the particle (where two particles touching face to face get two manifold
+	/// points, see BuildContactManifold) is the arc within this distance of the tangent at its
+	/// flattest point. Default: half of Box2D's linear slop.
 	double patchTolerance = 0.5 * b2_linearSlop;
-	/// A flat patch gets two points only when it is wider than this fraction of the particle's
-	/// bounding radius; narrower ones are curved contacts and keep one point (see
-	/// BuildContactManifold). Blocky superellipses (n ≥ 4) have patches wider than half their
-	/// size, ellipses of aspect up to about 10 narrower than a quarter.
-	double patchMinWidth = 0.25;
+	/// Faces that overlap by less than this fraction of the particle's bounding radius (or than
+	/// twice patchTolerance, the slop by default) get one point (see BuildContactManifold). The
+	/// default, 0, gives two points wherever two faces overlap by more than the slop; a curved
+	/// contact gets one regardless.
+	double patchMinWidth = 0.0;
 	/// Options of the contact solvers.
 	SolverOptions solver;
 };
@@ -92,6 +93,17 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 
 /// Shorthand: an analytic fixture at the body origin with the given density.
 b2Fixture* CreateAnalyticFixture(b2Body* body, ShapePtr shape, float density);
+
+/// Shorthand: an analytic fixture at the body origin with the given density, friction and
+/// restitution (the rest of b2FixtureDef's defaults), as b2Body::CreateFixture(shape, density)
+/// is for Box2D's shapes with friction and restitution set afterwards. Throws as the full form.
+b2Fixture* CreateAnalyticFixture(b2Body* body, ShapePtr shape, float density, float friction, float restitution = 0.0f);
+
+/// Shorthand: an analytic fixture as `analytic` says (shape, local pose, patch and solver
+/// options) with the given density, friction and restitution (the rest of b2FixtureDef's
+/// defaults). Throws as the full form.
+b2Fixture* CreateAnalyticFixture(b2Body* body, const AnalyticFixtureDef& analytic, float density, float friction,
+                                 float restitution = 0.0f);
 
 /// The analytic shape of a fixture, or null for a plain Box2D fixture.
 const Shape* GetAnalyticShape(const b2Fixture* fixture);

@@ -4,6 +4,8 @@
 #include "b2analytic/ContactResult.h"
 #include "b2analytic/Shape.h"
 
+#include <limits>
+
 namespace b2a
 {
 
@@ -37,30 +39,41 @@ struct ContactManifold
 	ManifoldPoint points[2]; ///< the points
 };
 
-/// Where the flat stretches of a contact ended last time (polar angles in each shape's body
-/// frame), so that the next step's search starts there. Keep one per persistent contact.
+/// The faces a contact found last time (polar angles in each shape's body frame: the face's
+/// flattest point, then its two ends), so that the next step takes them again without a search
+/// while the contact stays on them; and where the contact was on none. Keep one per persistent
+/// contact.
 struct ManifoldCache
 {
-	double endsA[2] = {0.0, 0.0};   ///< ends of A's stretch
-	double endsB[2] = {0.0, 0.0};   ///< ends of B's stretch
-	double slopesA[2] = {0.0, 0.0}; ///< d(depth − tol)/d(angle) at A's ends (0: none), for the next step's secant
-	double slopesB[2] = {0.0, 0.0}; ///< the same at B's ends
-	bool validA = false;            ///< endsA holds a previous answer
-	bool validB = false;            ///< endsB holds a previous answer
+	double faceA[3] = {0.0, 0.0, 0.0}; ///< A's face
+	double faceB[3] = {0.0, 0.0, 0.0}; ///< B's face
+	/// Polar angle of A's contact point where it was found on no face (NaN: none): no search
+	/// until the point has moved 0.01 rad from it.
+	double offFaceA = std::numeric_limits<double>::quiet_NaN();
+	double offFaceB = std::numeric_limits<double>::quiet_NaN(); ///< the same for B
+	bool validA = false;               ///< faceA holds a face
+	bool validB = false;               ///< faceB holds a face
 };
 
-/// Build the manifold of a contact. Two particles that touch along a flat stretch (blocky
-/// superellipses side by side, or on a floor) must get two points with one normal, as Box2D's
-/// boxes do, or stacks rock and creep. The stretch ("patch") is where both surfaces lie within
-/// `patchTolerance` of their extreme along the normal: the arc of A around its support point along
-/// +normal and of B along −normal (a polygon's face, for a polygon). Where the two stretches
-/// overlap along the tangent by more than `minPatchWidth`, the manifold has the overlap's two
-/// ends (B's surface points there); otherwise it has the contact's own pointB. Curved contacts
-/// (ellipses) stay single points: their stretch within the tolerance is narrow (about
-/// 2·√(2ρ·tolerance) for a radius of curvature ρ), and two points there would hold up an
-/// ellipse balanced on another that physics says must roll off. `radii` (Box2D skin
-/// radii of non-analytic sides) is subtracted from every separation, and only points with
-/// separation ≤ 0 are reported (Box2D 2.4 has no speculative contacts: a gap would hover).
+/// Build the manifold of a contact, as Box2D builds its polygons': two particles that touch face
+/// to face (blocky superellipses side by side, on a floor, or offset by half their width as in
+/// a pyramid or a wall) get two points with one normal, or stacks rock, creep and sag. A face is
+/// a polygon's edge, or the arc of an analytic particle around a point whose radius of curvature
+/// exceeds ten bounding radii (a blocky superellipse's side; not a circle, nor an ellipse of
+/// aspect below ten), within `patchTolerance` of the tangent there: it belongs to the body. Where
+/// both contact points lie on faces, A's face is the reference: the normal is its normal, and
+/// where the two faces' extents along it overlap by more than max(2·patchTolerance,
+/// minPatchWidth), the points are B's surface at the overlap's two ends (ids 0 and 1), those at
+/// or below A's face plane (a tilted face lifts one end: the other alone), with their
+/// separations from that plane, as Box2D measures a box's points against its reference face.
+/// Otherwise, and where neither end touches, the manifold is the contact's own normal, pointA
+/// and pointB (id 0): a curved contact keeps one point, as two on a curved surface would make a
+/// foot and hold up an ellipse balanced on another that physics says must roll off.
+/// Analytic particles with corners or infinite curvature on their axes (superellipse exponents
+/// below 2) have no curvature to tell faces by: their face is the arc within the tolerance of
+/// their extreme along the contact normal. `radii` (Box2D skin radii of non-analytic sides) is
+/// subtracted from every separation, and only points with separation ≤ 0 are reported (Box2D 2.4
+/// has no speculative contacts: a gap would hover).
 ContactManifold BuildContactManifold(const ContactResult& contact, const ManifoldSide& a, const ManifoldSide& b,
                                      double patchTolerance, double minPatchWidth, double radii = 0.0,
                                      ManifoldCache* cache = nullptr);

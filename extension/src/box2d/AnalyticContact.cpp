@@ -59,24 +59,28 @@ bool SeparatedAlong(const Shape& a, const Pose& pa, const Shape& b, const Pose& 
 }
 
 // Write a manifold in Box2D's e_faceA form: normal and the point on A in A's frame, points on B
-// in B's frame. Ids 0 and 1 follow the patch's ends along the tangent, so they are stable while
-// the contact persists and Box2D carries impulses between steps. Box2D subtracts each shape's
-// m_radius from the separation; an analytic side's proxy has a skin (for the time of impact)
-// that the true surface does not, so its point moves into the body by that skin, which Box2D's
-// subtraction then cancels (skinA, skinB: 0 for plain shapes, whose skin is real).
+// in B's frame; or, where the manifold was built from B's side (`onB`: its normal points from B
+// to A, its pointA lies on B and its points on A), in the e_faceB form, which Box2D reads the
+// same way with the roles swapped. Ids 0 and 1 follow the patch's ends along the tangent, so they
+// are stable while the contact persists and Box2D carries impulses between steps. Box2D subtracts
+// each shape's m_radius from the separation; an analytic side's proxy has a skin (for the time of
+// impact) that the true surface does not, so its point moves into the body by that skin, which
+// Box2D's subtraction then cancels (skinA, skinB: 0 for plain shapes, whose skin is real).
 void Write(const ContactManifold& m, b2Manifold* out, const b2Transform& xfA, const b2Transform& xfB, double skinA,
-           double skinB)
+           double skinB, bool onB = false)
 {
 	out->pointCount = 0;
 	if (m.count == 0)
 		return;
-	out->type = b2Manifold::e_faceA;
-	out->localNormal = b2MulT(xfA.q, F(m.normal));
-	out->localPoint = b2MulT(xfA, F(m.pointA - skinA * m.normal));
+	const b2Transform& reference = onB ? xfB : xfA;
+	const b2Transform& incident = onB ? xfA : xfB;
+	out->type = onB ? b2Manifold::e_faceB : b2Manifold::e_faceA;
+	out->localNormal = b2MulT(reference.q, F(m.normal));
+	out->localPoint = b2MulT(reference, F(m.pointA - (onB ? skinB : skinA) * m.normal));
 	for (int k = 0; k < m.count; ++k)
 	{
 		b2ManifoldPoint& p = out->points[k];
-		p.localPoint = b2MulT(xfB, F(m.points[k].pointB + skinB * m.normal));
+		p.localPoint = b2MulT(incident, F(m.points[k].pointB + (onB ? skinA : skinB) * m.normal));
 		p.normalImpulse = 0.0f;
 		p.tangentImpulse = 0.0f;
 		p.id.key = 0;
@@ -379,8 +383,13 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	}
 	if (!c.Ok())
 		return; // a failed solve (never NaN) gives no contact this step
-	Write(BuildContactManifold(c, sideA, sideB, m_patchTolerance, m_patchMinWidth, radii, &m_patch), manifold, xfA, xfB, pa.skin,
-	      pb.skin);
+	// A non-convex particle against a face stands on its lobes (BuildContactManifold), found with
+	// the face's side as the manifold's A: where that is the contact's B, the manifold is built
+	// from B's side. (Which side is non-convex is fixed for the contact: its cache keeps its roles.)
+	const bool fromB = sideA.shape && !sideA.shape->IsConvex() && !sideB.point && (!sideB.shape || sideB.shape->IsConvex());
+	const ContactManifold m = fromB ? BuildContactManifold(FlipContact(c), sideB, sideA, m_patchTolerance, m_patchMinWidth, radii, &m_patch)
+	                                : BuildContactManifold(c, sideA, sideB, m_patchTolerance, m_patchMinWidth, radii, &m_patch);
+	Write(m, manifold, xfA, xfB, pa.skin, pb.skin, fromB);
 }
 
 } // namespace b2a

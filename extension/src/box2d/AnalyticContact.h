@@ -73,7 +73,7 @@ private:
 	// Box2D frees contacts without running their destructors when a world is destroyed, so
 	// every member here must be trivially destructible: the circle is borrowed from a cache.
 	const Shape* m_circle = nullptr; // the analytic circle standing in for a Box2D circle fixture
-	ManifoldCache m_patch;  // where last step's flat patch ended
+	ManifoldCache m_patch;  // the faces last step's manifold found (BuildContactManifold)
 	// A manifold computed ahead of the step (Prepare) and the transforms it belongs to.
 	b2Transform m_preparedA, m_preparedB;
 	b2Manifold m_preparedManifold;

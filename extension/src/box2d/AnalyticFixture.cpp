@@ -314,6 +314,22 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, ShapePtr shape, float density)
 	return CreateAnalyticFixture(body, def, analytic);
 }
 
+b2Fixture* CreateAnalyticFixture(b2Body* body, ShapePtr shape, float density, float friction, float restitution)
+{
+	AnalyticFixtureDef analytic;
+	analytic.shape = std::move(shape);
+	return CreateAnalyticFixture(body, analytic, density, friction, restitution);
+}
+
+b2Fixture* CreateAnalyticFixture(b2Body* body, const AnalyticFixtureDef& analytic, float density, float friction, float restitution)
+{
+	b2FixtureDef def;
+	def.density = density;
+	def.friction = friction;
+	def.restitution = restitution;
+	return CreateAnalyticFixture(body, def, analytic);
+}
+
 const Shape* GetAnalyticShape(const b2Fixture* fixture)
 {
 	const AnalyticProxyShape* p = Proxy(fixture);

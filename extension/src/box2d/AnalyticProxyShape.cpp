@@ -96,10 +96,19 @@ bool AnalyticProxyShape::RayCast(b2RayCastOutput* output, const b2RayCastInput& 
 
 void AnalyticProxyShape::ComputeAABB(b2AABB* aabb, const b2Transform& transform, int32) const
 {
+	AnalyticFixtureData& data = MutableData();
+	if (data.hasLastBox && std::memcmp(&transform, &data.lastTransform, sizeof(b2Transform)) == 0)
+	{
+		*aabb = data.lastBox; // (a heart's box is four supports)
+		return;
+	}
 	// The tight box of the true shape, rounded outwards to float.
-	const Box box = Data().shape->ComputeAABB(WorldPose(transform));
+	const Box box = data.shape->ComputeAABB(WorldPose(transform));
 	aabb->lowerBound.Set(FloatBelow(box.lower.x), FloatBelow(box.lower.y));
 	aabb->upperBound.Set(FloatAbove(box.upper.x), FloatAbove(box.upper.y));
+	data.lastTransform = transform;
+	data.lastBox = *aabb;
+	data.hasLastBox = true;
 }
 
 b2MassData AnalyticMassData(const Shape& shape, const Pose& local, float density)

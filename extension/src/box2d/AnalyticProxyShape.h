@@ -2,7 +2,9 @@
 #pragma once
 
 #include "b2analytic/AnalyticFixture.h"
+#include "b2analytic/Box2DConversions.h"
 
+#include <box2d/b2_collision.h>
 #include <box2d/b2_polygon_shape.h>
 
 #include <atomic>
@@ -21,6 +23,12 @@ struct AnalyticFixtureData
 	double patchTolerance = 0.0;
 	double patchMinWidth = 0.0; // absolute: the fraction times the bounding radius
 	SolverOptions solver;
+	// The last box ComputeAABB gave and its transform: Box2D asks each moving body's fixtures for
+	// the boxes at its last and new transforms every step (b2Fixture::Synchronize), so the last
+	// is asked again. Box2D calls it from its own thread only (never from PrepareContacts').
+	b2Transform lastTransform;
+	b2AABB lastBox;
+	bool hasLastBox = false;
 };
 
 /// A b2PolygonShape whose virtual functions answer for the analytic shape, and whose vertices
@@ -53,6 +61,8 @@ public:
 
 	/// The shared analytic data.
 	const AnalyticFixtureData& Data() const { return *m_dataPointer(); }
+	/// The same, for the box cache.
+	AnalyticFixtureData& MutableData() const { return *m_dataPointer(); }
 	/// World pose of the analytic shape for a body transform.
 	Pose WorldPose(const b2Transform& transform) const;
 	/// The proxy if `shape` is one, else null.
@@ -69,16 +79,6 @@ static_assert(sizeof(void*) <= sizeof(b2Vec2), "the data pointer must fit in one
 /// Box2D's mass data of `shape` placed at `local` in its body's frame with `density`: what the
 /// proxy's ComputeMass gives (CreateAnalyticFixture checks it before Box2D sees it).
 b2MassData AnalyticMassData(const Shape& shape, const Pose& local, float density);
-
-/// Pose of a Box2D transform, in double precision.
-inline Pose ToPose(const b2Transform& xf)
-{
-	Pose p;
-	p.p = Vec2(xf.p.x, xf.p.y);
-	p.q.c = xf.q.c;
-	p.q.s = xf.q.s;
-	return p;
-}
 
 /// Composition: body pose times a local pose.
 inline Pose Compose(const Pose& body, const Pose& local)

@@ -1,217 +1,273 @@
 // b2analytic: one- and two-point manifolds from a contact.
+//
+// Box2D's boxes rest on two points because their faces are flat and fixed in the body: the
+// manifold's normal is the reference face's, its points are the incident face's ends clipped to
+// the reference face, and a point that lifts above the reference face is dropped. A tilted box
+// thus stands on its lower corner and gravity turns it back flat. Blocky analytic shapes have
+// faces too, flat to within Box2D's slop over much of their sides, and the manifold here is built
+// the same way from them: a face is the arc around a point of the surface whose radius of
+// curvature is large against the particle (its flattest point), within the tolerance of the
+// tangent there. It belongs to the body, as a box's face does, so a tilted particle's face ends
+// lie at different depths and the higher one lifts off. (Arcs within the tolerance of each
+// particle's extreme along the contact normal would not do: their ends always lie at the same
+// depth, so a particle stands on them at any small tilt, a foot that freezes whatever tilt a
+// pile left it with.) The normal is A's face normal: fixed in A's frame, it does not turn with
+// the small rotations that move the contact point of two nearly flat faces along them.
 #include "b2analytic/ContactManifold.h"
 
+#include "b2analytic/SuperellipseShape.h"
 #include "b2analytic/SurfaceQueries.h"
+#include "contact/SolverCore.h"
 #include "numerics/RootFinding.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace b2a
 {
 
 namespace
 {
-struct Interval
+// A face of one side in world coordinates: its outward unit normal, a point of its plane (on the
+// surface), and its two ends.
+struct Face
 {
-	double lo = 0.0, hi = 0.0;
 	bool valid = false;
+	Vec2 normal;
+	Vec2 centre;
+	Vec2 ends[2];
 };
 
-// Tangent extent (coordinates along t from `origin`) of the arc of an analytic convex shape
-// whose points lie within tol of its extreme along d. db is d in the body frame and q the
-// support point along it (Face has them already). Each end is found in polar angle to within
-// kEndTolerance, and cache / slopes keep each end and the slope of the excess there for the
-// next step:
-//  - from last step's end, secant steps (the first on last step's slope) converge on the new
-//    end: in a settling packing ends move 1e-5 to 1e-3 rad per step, the first guess is off
-//    by 1e-10 to 1e-6 and each step multiplies the error by about the one before. One point a
-//    tolerance beyond the last proves the end: about five surface points, the end's included;
-//  - else (the first step, or the proof failed) the end is bracketed by steps that double from
-//    a small one, from last step's end or the support point, and Brent's method finishes:
-//    about seven points, and one more for the slope.
-Interval AnalyticFace(const Shape& shape, const Pose& pose, Vec2 db, Vec2 q, Vec2 origin, Vec2 t, double tol, double* cache,
-                      double* slopes, bool& cached)
+// Curvature of the level curve through the body point x (1/length): t·H·t/|∇λ| with t the
+// unit tangent. +∞ where the gradient vanishes or anything is not finite (no claim of flatness).
+double LevelCurvature(const Shape& shape, Vec2 x)
 {
-	constexpr double kEndTolerance = 1e-10; // rad: 1e-10 of the size, far below Box2D's float points
-	Interval out;
+	const LevelDerivatives ld = shape.Derivatives(x);
+	const double g = Length(ld.gradient);
+	if (!(g > 0.0) || !std::isfinite(g))
+		return std::numeric_limits<double>::infinity();
+	const Vec2 t = Perp(ld.gradient) / g;
+	const double kappa = Dot(t, ld.hessian * t) / g;
+	return std::isfinite(kappa) ? kappa : std::numeric_limits<double>::infinity();
+}
+
+// A face's flattest point has a radius of curvature above ten bounding radii R (κR ≤ 0.1):
+// a blocky superellipse's sides have one (the curvature vanishes on the axis and grows as
+// |x|^(n−2) towards the corners); a circle and an ellipse of aspect below ten do not (κR = b/a
+// at an ellipse's flattest point). Those keep one manifold point: two points on a curved
+// surface would make a foot, and hold up an ellipse balanced on another that physics says must
+// roll off.
+constexpr double kFlatCurvature = 0.1;
+
+// Whether the shape can have a face at all: an ellipse's flattest point, the end of its minor
+// axis, has κR = b/a (circles 1), so only needles of aspect ten and more have one; decided once
+// here instead of by curvatures at every step of every contact (most of a hopper's).
+bool CanHaveFaces(const Shape& shape)
+{
+	const SuperellipseShape* e = AsPlainEllipse(shape);
+	if (!e)
+		return true;
+	return std::min(e->A(), e->B()) <= kFlatCurvature * std::max(e->A(), e->B());
+}
+
+// Whether the surface point x (body frame) may lie on a face, before the search for one: it is
+// flat enough itself, or the points where its arc within the tolerance would end if the surface
+// were the parabola of x's curvature (√(2·tol/κ) either way along the tangent) are, with a
+// margin of two. A circle's or an ellipse's arc is as curved throughout and fails here; a blocky
+// particle's shoulder flattens towards its face and passes.
+bool MayReachFace(const Shape& shape, Vec2 x, double tol)
+{
+	const double limit = 2.0 * kFlatCurvature / shape.BoundingRadius();
+	const double kappa = LevelCurvature(shape, x);
+	if (!(kappa > limit))
+		return true;
+	if (!std::isfinite(kappa))
+		return false;
+	const Vec2 t = Perp(Normalize(shape.Gradient(x)));
+	const double reach = std::sqrt(2.0 * tol / kappa);
+	return LevelCurvature(shape, x + reach * t) <= limit || LevelCurvature(shape, x - reach * t) <= limit;
+}
+
+// The polar angles (body frame) of the two ends of the arc of a convex shape whose points lie
+// within tol of its extreme along the body direction db, q being the support point along it:
+// the end on the clockwise side first. Each is bracketed by steps that double from π/64 and
+// found by Brent's method to 1e-10 rad (1e-10 of the size, far below Box2D's float points).
+// False where the arc reaches half a turn either way (no end to bound) or q is not the extreme.
+bool ArcEnds(const Shape& shape, Vec2 db, Vec2 q, double tol, double ends[2])
+{
 	const double h = Dot(q, db);
 	const double ts = std::atan2(q.y, q.x);
-	// excess(θ) = (h − x(θ)·d) − tol: the depth below the extreme, less tol; ≤ 0 on the face.
-	// Angles are measured from ts, unwrapped into (−π, π].
-	auto excessAt = [&](Vec2 x) { return (h - Dot(x, db)) - tol; };
-	auto excess = [&](double relativeAngle) { return excessAt(shape.SurfacePoint(ts + relativeAngle)); };
-	auto relative = [&](double theta) { return std::remainder(theta - ts, 2.0 * kPi); };
-	const double atSupport = excess(0.0); // the same for both ends
+	// excess(θ) = (h − x(θ)·d) − tol, angles measured from ts: ≤ 0 on the arc.
+	auto excess = [&](double relative) { return (h - Dot(shape.SurfacePoint(ts + relative), db)) - tol; };
+	const double atSupport = excess(0.0);
 	if (!(atSupport <= 0.0))
-		return out;
-	double ends[2];
+		return false;
 	for (int side = 0; side < 2; ++side)
 	{
 		const double dir = side == 0 ? -1.0 : 1.0;
-		double start = 0.0;
-		if (cached && dir * relative(cache[side]) > 0.0)
-			start = relative(cache[side]);
-		const double fs = start != 0.0 ? excess(start) : atSupport;
-		// Secant steps from last step's end, the first on last step's slope (the excess rises
-		// outwards: slope·dir > 0), at most five. Once the next step would move less than half
-		// a tolerance, the end lies within a tolerance of the last point: outwards if that point
-		// is on the face, else inwards. One point a tolerance that way proves it by its sign.
-		if (start != 0.0 && slopes[side] * dir > 0.0)
+		double inner = 0.0, fin = atSupport, outer = 0.0, fout = 0.0, step = kPi / 64.0;
+		for (outer = dir * step, fout = excess(outer); fout <= 0.0; outer += dir * step, fout = excess(outer))
 		{
-			auto inRange = [&](double x) { return dir * x > 0.0 && std::fabs(x) < kPi; };
-			double xPrev = start, fPrev = fs, x = start - fs / slopes[side];
-			bool found = false;
-			for (int k = 0; k < 5 && inRange(x); ++k)
-			{
-				const Vec2 px = shape.SurfacePoint(ts + x);
-				const double f = excessAt(px);
-				const double next = x - f * (x - xPrev) / (f - fPrev);
-				if (std::fabs(next - x) < 0.5 * kEndTolerance)
-				{
-					const double other = x + (f <= 0.0 ? dir : -dir) * kEndTolerance;
-					if (!inRange(other))
-						break;
-					const Vec2 po = shape.SurfacePoint(ts + other);
-					const double fo = excessAt(po);
-					if ((f <= 0.0) == (fo <= 0.0))
-						break;
-					// The end lies between x and other; the one kept is on the face, as Brent's is.
-					const bool xInside = f <= 0.0;
-					cache[side] = ts + (xInside ? x : other);
-					slopes[side] = (fo - f) / (other - x);
-					ends[side] = Dot(ToWorld(pose, xInside ? px : po) - origin, t);
-					found = true;
-					break;
-				}
-				xPrev = x;
-				fPrev = f;
-				x = next;
-			}
-			if (found)
-				continue;
+			inner = outer;
+			fin = fout;
+			step *= 2.0;
+			if (std::fabs(outer) > kPi)
+				return false;
 		}
-		double inner = 0.0, fin = atSupport, outer = 0.0, fout = 0.0;
-		double step = cached ? 1e-3 : kPi / 64.0;
-		if (fs <= 0.0)
-		{
-			inner = start;
-			fin = fs;
-			for (outer = start + dir * step, fout = excess(outer); fout <= 0.0; outer += dir * step, fout = excess(outer))
-			{
-				inner = outer;
-				fin = fout;
-				step *= 2.0;
-				if (std::fabs(outer) > kPi)
-					return out; // the whole half turns within tol: not a patch we can bound
-			}
-		}
-		else
-		{
-			outer = start;
-			fout = fs;
-			for (inner = start - dir * step; dir * inner > 0.0; inner -= dir * step)
-			{
-				fin = excess(inner);
-				if (fin <= 0.0)
-					break;
-				outer = inner;
-				fout = fin;
-				step *= 2.0;
-			}
-			if (dir * inner <= 0.0)
-			{
-				inner = 0.0;
-				fin = atSupport;
-			}
-		}
-		const ScalarResult root = FindRootBrent(excess, inner, outer, fin, fout, kEndTolerance, 100);
-		// The slope for the next step's secant, over 1e-8 rad outwards: its rounding (1e-16 of
-		// the excess's terms over 1e-8 of the slope) and its curvature error are both about 1e-8
-		// of the slope, which moves the next guess by far less than the tolerance.
-		constexpr double kSlopeStep = 1e-8;
-		slopes[side] = (excess(root.x + dir * kSlopeStep) - root.fx) / (dir * kSlopeStep);
-		cache[side] = ts + root.x;
-		ends[side] = Dot(ToWorld(pose, shape.SurfacePoint(cache[side])) - origin, t);
+		ends[side] = ts + FindRootBrent(excess, inner, outer, fin, fout, 1e-10, 100).x;
 	}
-	cached = true;
-	out.lo = std::min(ends[0], ends[1]);
-	out.hi = std::max(ends[0], ends[1]);
+	return true;
+}
+
+// A smooth convex shape's face nearest the body point x of its surface, as polar angles (body
+// frame): face[0] its flattest point, face[1] and face[2] its ends; false where there is none.
+// The flattest point is where the curvature, descending from x along the surface (steps that
+// double from 0.01 rad, within a quarter turn), has its minimum (Brent's method, to 1e-8 rad; the
+// face's normal moves by the curvature times that, nothing at a flat point).
+bool FindFace(const Shape& shape, Vec2 x, double tol, double face[3])
+{
+	auto kappa = [&](double theta) { return LevelCurvature(shape, shape.SurfacePoint(theta)); };
+	const double t0 = std::atan2(x.y, x.x), k0 = kappa(t0), h = 0.01;
+	const double kPlus = kappa(t0 + h), kMinus = kappa(t0 - h);
+	double lo = t0 - h, hi = t0 + h;
+	if (!(k0 <= kPlus && k0 <= kMinus))
+	{
+		// Downhill until the curvature rises again: the minimum lies between the last two steps.
+		const double dir = kPlus < kMinus ? 1.0 : -1.0;
+		double before = t0, at = t0 + dir * h, kAt = std::min(kPlus, kMinus), step = h;
+		for (;;)
+		{
+			step *= 2.0;
+			if (std::fabs(at + dir * step - t0) > 0.5 * kPi)
+				return false;
+			const double next = at + dir * step, kNext = kappa(next);
+			if (!(kNext < kAt))
+			{
+				lo = std::min(before, next);
+				hi = std::max(before, next);
+				break;
+			}
+			before = at;
+			at = next;
+			kAt = kNext;
+		}
+	}
+	const ScalarResult m = MinimizeBrent(kappa, lo, hi, 1e-8, 1e-10, 100);
+	if (!(m.fx * shape.BoundingRadius() <= kFlatCurvature))
+		return false;
+	const Vec2 c = shape.SurfacePoint(m.x);
+	double ends[2];
+	if (!ArcEnds(shape, Normalize(shape.Gradient(c)), c, tol, ends))
+		return false;
+	face[0] = m.x;
+	face[1] = ends[0];
+	face[2] = ends[1];
+	return true;
+}
+
+// Whether the body point x lies on the face (angles as FindFace gives them).
+bool OnFace(const double face[3], Vec2 x)
+{
+	const double at = std::remainder(std::atan2(x.y, x.x) - face[0], 2.0 * kPi);
+	return at >= std::remainder(face[1] - face[0], 2.0 * kPi) && at <= std::remainder(face[2] - face[0], 2.0 * kPi);
+}
+
+// The face of an analytic convex side at its contact point p (world) with outward direction d
+// (world). Smooth shapes: the face through p, kept in `face` (angles) while the contact stays
+// on it. Shapes with corners or infinite curvature on their axes (superellipse exponents below 2)
+// have no curvature to tell faces by: their face is the arc within tol of their extreme along d,
+// with d as its normal.
+Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace)
+{
+	Face out;
+	const Shape& shape = *side.shape;
+	if (!shape.IsSmoothConvex())
+	{
+		const Vec2 db = InvRotate(side.pose.q, d);
+		const Vec2 q = shape.Support(db);
+		double ends[2];
+		if (!ArcEnds(shape, db, q, tol, ends))
+			return out;
+		out.valid = true;
+		out.normal = d;
+		out.centre = ToWorld(side.pose, q);
+		for (int k = 0; k < 2; ++k)
+			out.ends[k] = ToWorld(side.pose, shape.SurfacePoint(ends[k]));
+		return out;
+	}
+	if (!CanHaveFaces(shape))
+		return out;
+	const Vec2 x = ToBody(side.pose, p);
+	if (!(cached && OnFace(face, x)))
+	{
+		// Off the face kept (or none kept): a contact point that stays near where none was found
+		// last time is taken to stay off faces, and a search runs only once it has moved on by
+		// 0.01 rad (a tenth of a blocky particle's face, whose arrival at a face kept the check
+		// above sees). In a settling pile most contacts on a blocky particle's rounded corners
+		// were searched again at every step.
+		const double theta = std::atan2(x.y, x.x);
+		if (std::fabs(std::remainder(theta - offFace, 2.0 * kPi)) < 0.01)
+			return out;
+		if (!MayReachFace(shape, x, tol) || !FindFace(shape, x, tol, face))
+			cached = false;
+		else
+			cached = true;
+		if (!(cached && OnFace(face, x)))
+		{
+			offFace = theta;
+			return out;
+		}
+	}
+	const Vec2 c = shape.SurfacePoint(face[0]);
 	out.valid = true;
+	out.normal = Rotate(side.pose.q, Normalize(shape.Gradient(c)));
+	out.centre = ToWorld(side.pose, c);
+	out.ends[0] = ToWorld(side.pose, shape.SurfacePoint(face[1]));
+	out.ends[1] = ToWorld(side.pose, shape.SurfacePoint(face[2]));
 	return out;
 }
 
-// Tangent extent of the part of a polygon or segment within tol of its extreme along d.
-Interval PolygonFace(const Vec2* w, int count, Vec2 d, Vec2 origin, Vec2 t, double tol)
+// The face of a polygon or segment facing d: the edge whose outward normal lies nearest d (it
+// holds the polygon's extreme vertex along d), with the point p projected onto it as the point
+// of its plane.
+Face PolygonSideFace(const Vec2* w, int count, Vec2 p, Vec2 d)
 {
-	Interval out;
-	double h = -std::numeric_limits<double>::infinity();
-	for (int j = 0; j < count; ++j)
-		h = std::max(h, Dot(w[j], d));
-	out.lo = std::numeric_limits<double>::infinity();
-	out.hi = -out.lo;
-	auto add = [&](Vec2 p) {
-		const double s = Dot(p - origin, t);
-		out.lo = std::min(out.lo, s);
-		out.hi = std::max(out.hi, s);
-	};
+	Face out;
+	double best = -std::numeric_limits<double>::infinity();
 	const int edges = count == 2 ? 1 : count;
-	for (int j = 0; j < count; ++j)
-		if (Dot(w[j], d) >= h - tol)
-			add(w[j]);
 	for (int j = 0; j < edges; ++j)
 	{
-		// Where an edge crosses the level h − tol, the patch ends.
-		const Vec2 p = w[j], r = w[(j + 1) % count];
-		const double fp = Dot(p, d) - (h - tol), fr = Dot(r, d) - (h - tol);
-		if ((fp > 0.0) != (fr > 0.0))
-			add(p + (fp / (fp - fr)) * (r - p));
+		const Vec2 u = w[j], v = w[(j + 1) % count];
+		const Vec2 outward = Normalize(Vec2(v.y - u.y, u.x - v.x)); // (counter-clockwise polygons)
+		// A polygon's edge faces outwards; a segment's faces both ways.
+		for (int side = 0; side < (count == 2 ? 2 : 1); ++side)
+		{
+			const Vec2 normal = side == 0 ? outward : -outward;
+			if (LengthSquared(normal) > 0.0 && Dot(normal, d) > best)
+			{
+				best = Dot(normal, d);
+				out.valid = true;
+				out.normal = normal;
+				out.centre = p - Dot(p - u, normal) * normal;
+				out.ends[0] = u;
+				out.ends[1] = v;
+			}
+		}
 	}
-	out.valid = out.lo <= out.hi;
 	return out;
 }
 
-// Whether the arc of an analytic shape around its support point q (body frame) may be a flat patch.
-// Flat means nearly zero curvature where it touches: a blocky superellipse's side (its
-// curvature vanishes on the axis), not an ellipse, which is curved everywhere (κ·R = b/a) and
-// whose rocking must follow that curvature. So the curvature κ there must be below a tenth of
-// the shape's bounding radius's inverse, and then the arc, which stays within tol over about
-// 2·√(2·tol/κ), must be able to reach half of minWidth (a margin for arcs that are not parabolas)
-// before the costly search for its ends runs.
-bool MayBeFlat(const Shape& shape, Vec2 q, double tol, double minWidth)
-{
-	const LevelDerivatives ld = shape.Derivatives(q);
-	const double g = Length(ld.gradient);
-	if (!(g > 0.0) || !std::isfinite(g))
-		return true;
-	const Vec2 t = Perp(ld.gradient) / g;
-	const double kappa = Dot(t, ld.hessian * t) / g;
-	if (!(kappa > 0.0) || !std::isfinite(kappa))
-		return true;
-	if (kappa * shape.BoundingRadius() > 0.1)
-		return false;
-	return 2.0 * std::sqrt(2.0 * tol / kappa) >= 0.5 * minWidth;
-}
-
-Interval Face(const ManifoldSide& side, Vec2 d, Vec2 origin, Vec2 t, double tol, double minWidth, double* cache, double* slopes,
-              bool& cached)
+Face SideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace)
 {
 	if (side.point)
 		return {};
 	if (side.shape)
-	{
-		if (!side.shape->IsConvex())
-			return {};
-		// The support point along d, which both the flatness test and the face search start from.
-		const Vec2 db = InvRotate(side.pose.q, d);
-		const Vec2 q = side.shape->Support(db);
-		if (side.shape->IsSmoothConvex() && !MayBeFlat(*side.shape, q, tol, minWidth))
-			return {};
-		return AnalyticFace(*side.shape, side.pose, db, q, origin, t, tol, cache, slopes, cached);
-	}
+		return side.shape->IsConvex() ? AnalyticSideFace(side, p, d, tol, face, cached, offFace) : Face{};
 	if (side.vertices && side.count >= 2)
-		return PolygonFace(side.vertices, side.count, d, origin, t, tol);
+		return PolygonSideFace(side.vertices, side.count, p, d);
 	return {};
 }
 
@@ -260,6 +316,71 @@ bool LowestAlong(const ManifoldSide& b, Vec2 p, Vec2 n, Vec2& out)
 	out = p + best * n;
 	return true;
 }
+
+// A non-convex particle B against A's face: its surface's lowest points along the face normal in
+// each of its lobes (a heart upside down on a floor stands on both lobes). The candidates are the
+// local minima of the depth below A's face plane among B's cached surface samples, over A's face;
+// each is refined between its neighbours (Brent's method on the polar angle, to 1e-10 rad) and
+// kept where it lies at or below the plane. The two deepest, at least twice the tolerance apart
+// along the face, become the points, ids by their order along it. A single point (one lobe)
+// is the lobe's lowest point; where none touches, the contact's own point stays.
+int LobesOnFace(const Face& fa, const ManifoldSide& b, double tol, double radii, ManifoldPoint out[2])
+{
+	const Shape& shape = *b.shape;
+	const SurfaceSamples& samples = shape.SamplesRef();
+	const int count = samples.Count();
+	const Vec2 n = fa.normal, t = Perp(n);
+	auto along = [&](Vec2 x) { return Dot(x - fa.centre, t); };
+	const double e0 = along(fa.ends[0]), e1 = along(fa.ends[1]);
+	const double lo = std::min(e0, e1), hi = std::max(e0, e1);
+	std::vector<double> depth(size_t(count), 0.0);
+	for (int i = 0; i < count; ++i)
+		depth[size_t(i)] = Dot(ToWorld(b.pose, samples.point[size_t(i)]) - fa.centre, n);
+	ManifoldPoint best[2];
+	int found = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		const double d = depth[size_t(i)];
+		if (!(d <= depth[size_t((i + count - 1) % count)] && d < depth[size_t((i + 1) % count)]) || d > tol + 2.0 * samples.maxDeviation)
+			continue;
+		double a0, a1;
+		samples.NeighbourAngles(i, a0, a1);
+		auto height = [&](double theta) { return Dot(ToWorld(b.pose, shape.SurfacePoint(theta)) - fa.centre, n); };
+		const ScalarResult m = MinimizeBrent(height, a0, a1, 1e-10, 1e-12, 60);
+		const Vec2 q = ToWorld(b.pose, shape.SurfacePoint(m.x));
+		const double sep = m.fx - radii, s = along(q);
+		if (!(sep <= 0.0) || s < lo || s > hi)
+			continue;
+		// Keep the two deepest lobes; a minimum within twice the tolerance of a kept one is the
+		// same lobe's (samples on either side of its bottom).
+		const ManifoldPoint p{q, sep, 0};
+		int same = -1;
+		for (int k = 0; k < found; ++k)
+			if (std::fabs(along(best[k].pointB) - s) <= 2.0 * tol)
+				same = k;
+		if (same >= 0)
+		{
+			if (sep < best[same].separation)
+				best[same] = p;
+		}
+		else if (found < 2)
+			best[found++] = p;
+		else
+		{
+			const int shallower = best[0].separation > best[1].separation ? 0 : 1;
+			if (sep < best[shallower].separation)
+				best[shallower] = p;
+		}
+	}
+	if (found == 2 && along(best[0].pointB) > along(best[1].pointB))
+		std::swap(best[0], best[1]);
+	for (int k = 0; k < found; ++k)
+	{
+		out[k] = best[k];
+		out[k].id = found == 2 ? k : 0;
+	}
+	return found;
+}
 } // namespace
 
 ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide& a, const ManifoldSide& b, double tol,
@@ -276,37 +397,48 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 		return m;
 	m.count = 1;
 	m.points[0] = {c.pointB, sep0, 0};
-	const Vec2 n = c.normal, t = Perp(n), origin = c.pointA;
-	const Interval fa = Face(a, n, origin, t, tol, minWidth, cache->endsA, cache->slopesA, cache->validA);
+	const Face fa = SideFace(a, c.pointA, c.normal, tol, cache->faceA, cache->validA, cache->offFaceA);
 	if (!fa.valid)
 		return m;
-	const Interval fb = Face(b, -n, origin, t, tol, minWidth, cache->endsB, cache->slopesB, cache->validB);
+	if (b.shape && !b.shape->IsConvex() && !b.point)
+	{
+		ContactManifold lobes;
+		lobes.normal = fa.normal;
+		lobes.pointA = fa.centre;
+		lobes.count = LobesOnFace(fa, b, tol, radii, lobes.points);
+		return lobes.count > 0 ? lobes : m;
+	}
+	const Face fb = SideFace(b, c.pointB, -c.normal, tol, cache->faceB, cache->validB, cache->offFaceB);
 	if (!fb.valid)
 		return m;
-	const double lo = std::max(fa.lo, fb.lo), hi = std::min(fa.hi, fb.hi);
-	if (!(hi - lo > std::max(tol, minWidth)))
-		return m; // a curved contact: one point
-	ManifoldPoint ends[2];
-	int kept = 0;
-	for (double s : {lo, hi})
+	// A's face is the reference: its normal, and its plane through its centre. The faces'
+	// extents along its tangent overlap by more than the slop, or the contact is a corner's.
+	const Vec2 n = fa.normal, t = Perp(n), origin = fa.centre;
+	auto along = [&](Vec2 x) { return Dot(x - origin, t); };
+	const double lo = std::max(std::min(along(fa.ends[0]), along(fa.ends[1])), std::min(along(fb.ends[0]), along(fb.ends[1])));
+	const double hi = std::min(std::max(along(fa.ends[0]), along(fa.ends[1])), std::max(along(fb.ends[0]), along(fb.ends[1])));
+	if (!(hi - lo > std::max(2.0 * tol, minWidth)))
+		return m;
+	// The overlap's ends: B's surface there, measured against A's face plane, as Box2D measures
+	// a box's points against its reference face. (Against A's surface under each point instead,
+	// which drops by up to tol towards its face's end, the separation would turn with every
+	// sideways shift of B near that end: a stack of ten blocks then swayed by 5 cm, the position
+	// solver feeding the turn.) Where an end lifts off (a tilted face), the other alone, with
+	// its id, as Box2D's clipping keeps an incident vertex below the reference face; where both
+	// lift off, the contact's own point.
+	ContactManifold clipped;
+	clipped.normal = n;
+	clipped.pointA = origin;
+	for (int k = 0; k < 2; ++k)
 	{
 		Vec2 q;
-		if (!LowestAlong(b, origin + s * t, n, q))
+		if (!LowestAlong(b, origin + (k == 0 ? lo : hi) * t, n, q))
 			continue;
-		const double sep = Dot(q - c.pointA, n) - radii;
+		const double sep = Dot(q - origin, n) - radii;
 		if (sep <= 0.0)
-		{
-			ends[kept] = {q, sep, kept};
-			++kept;
-		}
+			clipped.points[clipped.count++] = {q, sep, k};
 	}
-	if (kept == 2)
-	{
-		m.count = 2;
-		m.points[0] = ends[0];
-		m.points[1] = ends[1];
-	}
-	return m;
+	return clipped.count > 0 ? clipped : m;
 }
 
 } // namespace b2a

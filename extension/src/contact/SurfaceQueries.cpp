@@ -289,17 +289,28 @@ RayHit RayCast(const Shape& shape, const Pose& pose, Vec2 p1, Vec2 p2, double ma
 		return out;
 	if (TestPoint(shape, pose, p1))
 		return out; // starts inside: no hit, as Box2D's own shapes answer
-	// Only the part of the ray near the bounding circle can hit: skip to it.
+	// Only the part of the ray near the bounding circle can hit: skip to it. The circle is
+	// widened by 1e-9 so that where it touches the surface (a circle's everywhere) the search
+	// starts clear of it, outside by far more than rounding.
 	const double R = shape.BoundingRadius();
+	const double reach2 = R * R * (1.0 + 1e-9);
 	const double len2 = LengthSquared(d);
 	const double tc = Dot(pose.p - p1, d) / len2; // fraction of the point closest to the centre
 	const double miss2 = LengthSquared(p1 + tc * d - pose.p);
-	if (miss2 > R * R * (1.0 + 1e-12))
+	if (miss2 > reach2)
 		return out;
-	const double half = std::sqrt(std::max(0.0, R * R * (1.0 + 1e-12) - miss2) / len2);
-	const double t0 = std::max(0.0, tc - half), t1 = std::min(maxFraction, tc + half);
+	const double half = std::sqrt(std::max(0.0, reach2 - miss2) / len2);
+	double t0 = std::max(0.0, tc - half);
+	const double t1 = std::min(maxFraction, tc + half);
 	if (!(t1 > t0))
 		return out;
+	// The search must start outside: from inside it looks for where the ray leaves, and would
+	// answer the far side, or miss. The point on the widened circle is outside wherever the pose
+	// is a rigid motion; where it is not (a rotation whose cosine and sine are off unit length,
+	// as a float b2Rot's are by up to 1e-7), the particle reaches past its bounding circle, and
+	// the search starts at p1, which is outside.
+	if (t0 > 0.0 && TestPoint(shape, pose, p1 + t0 * d))
+		t0 = 0.0;
 	const Vec2 start = p1 + t0 * d;
 	const double s = FirstSurfaceCrossing(shape, pose, start, d, t1 - t0);
 	if (s < 0.0)
