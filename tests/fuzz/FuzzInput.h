@@ -52,8 +52,11 @@ public:
 		const std::uint8_t s = Byte();
 		return s < kOrdinary ? LogUniform(lo, hi) : Extreme(s);
 	}
-	/// True when some Number or Positive was not from its ordinary range.
+	/// True when some Number or Positive was not from its ordinary range, or MarkExtreme was called.
 	bool AnyExtreme() const { return m_extreme; }
+	/// Marks the input as beyond the ordinary for a choice that is not a number: a user shape
+	/// declared convex that is not, whose contacts may fail (saying so) where ordinary ones may not.
+	void MarkExtreme() { m_extreme = true; }
 
 private:
 	static constexpr std::uint8_t kOrdinary = 224;

@@ -58,6 +58,20 @@ inline std::string Describe(const Pose& p)
 	       FormatNumber(p.q.s) + "})";
 }
 
+/// Whether the star r(θ) = 1 + e·cos(kθ + φ) bounds a convex region: its curvature's sign is that
+/// of r² + 2r'² − r·r'' (the polar curvature formula), checked at 720 angles of u = kθ + φ.
+inline bool StarIsConvex(double e, int k)
+{
+	for (int i = 0; i < 720; ++i)
+	{
+		const double u = 2.0 * kPi * i / 720.0;
+		const double r = 1.0 + e * std::cos(u), dr = -e * k * std::sin(u), ddr = -e * k * k * std::cos(u);
+		if (r * r + 2.0 * dr * dr - r * ddr < 0.0)
+			return false;
+	}
+	return true;
+}
+
 /// A star-shaped user shape: G(x, L) = (|x| / (s·R(θ)))^p − L with R(θ) = 1 + e·cos(kθ + φ), e < 1.
 /// Its declared flags (convex, smooth) come from the bytes and may be wrong on purpose: a wrong
 /// declaration may give wrong answers, but never a crash, a hang or a non-finite "converged" one.
@@ -98,6 +112,8 @@ inline ShapePtr DecodeUserShape(FuzzInput& in)
 		};
 	}
 	def.convex = in.Bool();
+	if (def.convex && !StarIsConvex(e, k))
+		in.MarkExtreme();
 	def.smooth = in.Bool();
 	def.levelPower = in.Bool() ? 1.0 : 0.5 * p;
 	def.lengthScale = in.Bool() ? s : in.LogUniform(0.05, 20.0);
