@@ -345,18 +345,29 @@ TEST_CASE("stress: the automatic common level of 1000:1 needles is as exact as N
 	}
 }
 
-TEST_CASE("stress (known failure): nearly concentric high-exponent particles get a common level" * doctest::should_fail())
+TEST_CASE("stress: nearly concentric high-exponent particles get their common level from the grid")
 {
 	// Centres 1.5e-4 apart, sizes 0.0033 and 0.002 (n = 2.08, m = 14.4 against n = m = 17): the
 	// common level is 1.05e-25. Newton's Jacobian is singular and the min–max fallback fails to
 	// bracket its multiplier: the inner minimisation of ψA + μψB, flat to 1e-22 over the whole
-	// region, stalls, so g(ν) = ψA − ψB keeps its sign as ν goes to −∞.
-	const auto a = MakeSuperellipse(0x1.815dbb5696e4ep-13, 0x1.ad15c70a11afap-9, 0x1.0aa5aab5dc0d5p+1, 0x1.ce304908251d4p+3);
-	const auto b = MakeSuperellipse(0x1.03c853714cc73p-9, 0x1.03c853714cc73p-9, 17.0, 17.0);
+	// region, stalls, so g(ν) = ψA − ψB keeps its sign as ν goes to −∞. The grid, the chain's
+	// last step, needs no start: its level against the long-double reference (CommonLevelRef).
+	const double aa = 0x1.815dbb5696e4ep-13, ab = 0x1.ad15c70a11afap-9, an = 0x1.0aa5aab5dc0d5p+1, am = 0x1.ce304908251d4p+3;
+	const double br = 0x1.03c853714cc73p-9;
+	const auto a = MakeSuperellipse(aa, ab, an, am);
+	const auto b = MakeSuperellipse(br, br, 17.0, 17.0);
 	const Pose pa(Vec2(0x1.05d8bd7a50564p-8, 0x1.3ab3354e45e66p-7), -0x1.8aabcf12a236cp+0);
 	const Pose pb(Vec2(0x1.f81f26e9f2ddcp-9, 0x1.3a16cf1d67c25p-7), -0x1.0f38c1fe89c76p+1);
-	CHECK(SolveCommonLevel(*a, pa, *b, pb).Ok());
-	CHECK(ComputeContact(*a, pa, *b, pb).Ok());
+	const ref::CommonLevelResult built = ref::CommonLevelRef(ref::RefShape::Super(aa, ab, an, am), ref::Of(pa),
+	                                                         ref::RefShape::Super(br, br, 17.0L, 17.0L), ref::Of(pb));
+	const LevelResult l = SolveCommonLevel(*a, pa, *b, pb);
+	REQUIRE(l.Ok());
+	CHECK(l.status == SolveStatus::convergedAfterFallback);
+	MESSAGE("level " << l.level << " reference " << double(built.level));
+	CHECK(double(std::fabs(l.level - built.level) / built.level) < 1e-8);
+	const ContactResult c = ComputeContact(*a, pa, *b, pb);
+	REQUIRE(c.Ok());
+	CHECK(c.touching);
 }
 
 TEST_CASE("stress: a small heart beside a long plank gets the side that measures its gap")

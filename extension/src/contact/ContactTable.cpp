@@ -23,7 +23,7 @@
 //           (L giving up on an overlapping pair → OverlapAxis).
 //  level chains: CircleLevel   closed form
 //                EllipseLevel  ellipse pair (Perram–Wertheim)  → NewtonLevel
-//                NewtonLevel   Newton from the warm start      → Newton cold → min–max
+//                NewtonLevel   Newton from the warm start      → Newton cold → min–max → grid
 //                GridLevel     the grid's fixed point (non-convex pairs are refused before the table)
 //  Explicit methods, for any pair: MethodChoice::newton: from Newton alone (level: Newton alone);
 //  MethodChoice::grid: Grid (level: GridLevel).
@@ -115,6 +115,14 @@ LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, con
 		const int spent = r.iterations;
 		r = SolveCommonLevelMinMax(a, pa, b, pb, options);
 		r.iterations += spent;
+		if (!r.Ok())
+		{
+			// Min–max that stops short of the standard says so; the grid, which needs neither
+			// smoothness nor a good start, is the last resort.
+			const int spentBoth = r.iterations;
+			r = SolveCommonLevelGrid(a, pa, b, pb, options);
+			r.iterations += spentBoth;
+		}
 		if (r.Ok())
 			r.status = SolveStatus::convergedAfterFallback;
 	}
