@@ -119,37 +119,39 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 	return FirstSurfaceCrossingFrom(shape, pose, X, dir, sMax, f0, std::numeric_limits<double>::quiet_NaN());
 }
 
-double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax, double f0, double slope0)
+namespace
+{
+// FirstSurfaceCrossingFrom for a convex shape (f0 finite and not 0, sMax positive and finite).
+double ConvexCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax, double f0)
 {
 	const double own = shape.SurfaceLevel();
 	auto f = [&](double s) { return shape.Level(ToBody(pose, X + s * dir)) - own; };
-	if (!IsFinite(dir))
-		return -1.0; // (as when f0 was the level at X + 0·dir, NaN for such a dir)
-	if (f0 == 0.0)
-		return 0.0;
-	if (!std::isfinite(f0) || !(sMax > 0.0) || !std::isfinite(sMax))
-		return -1.0;
-	if (shape.IsConvex())
+	// The shape's own far crossing where it has one: leaving along dir from inside, or
+	// entering from outside, which is the far crossing of the reversed line.
+	const Vec2 xb = ToBody(pose, X), db = InvRotate(pose.q, dir);
+	double t = 0.0;
+	if (f0 < 0.0 ? shape.FarCrossing(xb, db, t) : shape.FarCrossing(xb, -db, t))
 	{
-		// The shape's own far crossing where it has one: leaving along dir from inside, or
-		// entering from outside, which is the far crossing of the reversed line.
-		const Vec2 xb = ToBody(pose, X), db = InvRotate(pose.q, dir);
-		double t = 0.0;
-		if (f0 < 0.0 ? shape.FarCrossing(xb, db, t) : shape.FarCrossing(xb, -db, t))
-		{
-			const double s = f0 < 0.0 ? t : -t;
-			return s >= 0.0 && s <= sMax ? s : -1.0;
-		}
-		const double fmax = f(sMax);
-		if (f0 < 0.0)
-			return fmax > 0.0 ? FindRootBrent(f, 0.0, sMax, f0, fmax, 0.0, 200).x : -1.0;
-		// Outside: the level is quasi-convex along the line, so its minimum tells whether the
-		// line enters; the entry is then bracketed by 0 and that minimum.
-		const ScalarResult m = MinimizeBrent(f, 0.0, sMax, 1e-12, 1e-15 * sMax, 200);
-		if (!(m.fx <= 0.0))
-			return -1.0;
-		return FindRootBrent(f, 0.0, m.x, f0, m.fx, 0.0, 200).x;
+		const double s = f0 < 0.0 ? t : -t;
+		return s >= 0.0 && s <= sMax ? s : -1.0;
 	}
+	const double fmax = f(sMax);
+	if (f0 < 0.0)
+		return fmax > 0.0 ? FindRootBrent(f, 0.0, sMax, f0, fmax, 0.0, 200).x : -1.0;
+	// Outside: the level is quasi-convex along the line, so its minimum tells whether the
+	// line enters; the entry is then bracketed by 0 and that minimum.
+	const ScalarResult m = MinimizeBrent(f, 0.0, sMax, 1e-12, 1e-15 * sMax, 200);
+	if (!(m.fx <= 0.0))
+		return -1.0;
+	return FindRootBrent(f, 0.0, m.x, f0, m.fx, 0.0, 200).x;
+}
+
+// FirstSurfaceCrossingFrom for a non-convex shape (f0 finite and not 0, sMax positive and
+// finite).
+double NonConvexCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax, double f0, double slope0)
+{
+	const double own = shape.SurfaceLevel();
+	auto f = [&](double s) { return shape.Level(ToBody(pose, X + s * dir)) - own; };
 	// Non-convex: march in steps finer than the surface samples, then bracket. Where the shape
 	// bounds its level over a disc, a stretch of the line whose covering disc lies wholly on the
 	// starting side (inside: the upper bound below the surface level; outside: the lower bound
@@ -279,6 +281,20 @@ double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Ve
 			step = expect ? std::max(2.0 * step, 4.0 * h) : 2.0 * step; // (a wrong guess: start afresh)
 	}
 	return -1.0;
+}
+} // namespace
+
+double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax, double f0, double slope0)
+{
+	if (!IsFinite(dir))
+		return -1.0; // (as when f0 was the level at X + 0·dir, NaN for such a dir)
+	if (f0 == 0.0)
+		return 0.0;
+	if (!std::isfinite(f0) || !(sMax > 0.0) || !std::isfinite(sMax))
+		return -1.0;
+	if (shape.IsConvex())
+		return ConvexCrossing(shape, pose, X, dir, sMax, f0);
+	return NonConvexCrossing(shape, pose, X, dir, sMax, f0, slope0);
 }
 
 RayHit RayCast(const Shape& shape, const Pose& pose, Vec2 p1, Vec2 p2, double maxFraction)
