@@ -41,10 +41,10 @@ namespace
 // bracket's end where f ≥ 0 (beyond the crossing from inside, before it from outside) find
 // it. Where any of this fails (no bounds, lo ≤ 0, f not monotone along the way at an iterate,
 // an iterate leaving the bracket, no convergence in 30 steps) it returns false and the march
-// decides. (On b2a_bench_pairs' heart–heart poses the march, guided, spent 3.9
-// disc bounds and 2.1 levels on a crossing before its bracketed Newton steps; this decides 69 %
-// of the crossings, with 2.14 derivative evaluations each. Most of the others run near the
-// heart's axis, where its level has its |x|^{2/3} kink and no curvature bound.)
+// decides. (The march evaluates disc bounds and levels before it has a bracket; this has one
+// from the start, and decides most of the crossings a heart's grid contact asks for. Most of
+// the others run near the heart's axis, where its level has its |x|^{2/3} kink and no
+// curvature bound.)
 bool CrossingByCurvature(const Shape& shape, Vec2 x, Vec2 u, double f0, double p, double sMax, double xtol, double& root)
 {
 	const double own = shape.SurfaceLevel();
@@ -99,9 +99,8 @@ bool CrossingByCurvature(const Shape& shape, Vec2 x, Vec2 u, double f0, double p
 		// on the bracket and W its width, Taylor about s puts Newton's iterate within a e² of
 		// the crossing, e the error before, and e ≤ |δ| + aWe, so e ≤ 2|δ| for aW ≤ 1/2 and
 		// Newton's error is at most 4aδ²; Halley's iterate lies |δ||x|/(1 − x) ≤ 2aδ² from
-		// Newton's. So within 6aδ². (Halley's steps and this stop: 2.14 derivative evaluations a
-		// crossing of b2a_bench_pairs' heart–heart poses, where Newton's, evaluating for its
-		// last, tiny step, took 3.34.)
+		// Newton's. So within 6aδ². (So the last, tiny step is never evaluated, as a stop on
+		// the step's length alone would evaluate it.)
 		const double a = curvature / (2.0 * std::fabs(slope));
 		if (std::fabs(step) <= xtol || (a * width <= 0.5 && 6.0 * a * newton * newton <= xtol))
 		{
@@ -162,10 +161,9 @@ double NonConvexCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir,
 	// plain step would step over it.
 	// The crossing in a bracket the march found, to the rounding of the point it gives: X + s·dir
 	// lies |x| from the shape's centre (x = X in the body frame), so a tolerance of a few
-	// roundings of |x| on s·|dir| is all a double point holds. (Relative to s alone, as without
-	// it, a crossing 1e-11 from X, where X is all but on the surface, asked for 1e-27: the level's
-	// own rounding then kept Newton from settling, and the bracket was halved 15 times or so:
-	// 4 % of a heart contact.)
+	// roundings of |x| on s·|dir| is all a double point holds. (Relative to s alone, a crossing
+	// 1e-11 from X, where X is all but on the surface, would ask for 1e-27: the level's own
+	// rounding keeps Newton from settling there, and the bracket is halved some 15 times.)
 	const double len = Length(dir);
 	const double xtol = 4.0 * std::numeric_limits<double>::epsilon() * Length(ToBody(pose, X)) / len;
 	auto root = [&](double from, double to, double ffrom, double fto) {
@@ -207,9 +205,8 @@ double NonConvexCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir,
 	// left to it, and within a plain step of it the plain step (twice the way left, at most h)
 	// is taken without a bound, where the crossing is expected. The first bound that fails, or
 	// a plain step that finds no crossing, ends the guidance. Doubling its way there instead,
-	// the march spent 8.2 bounds and 3.1 levels on a crossing of b2a_bench_pairs' heart
-	// poses, most of the bounds on stretches that reached past the surface; guided, 3.9 and
-	// 2.1 (and f0, which the caller has, is not computed again).
+	// the march spends most of its bounds on stretches that reach past the surface (and f0,
+	// which the caller has, is not computed again).
 	double est = std::numeric_limits<double>::quiet_NaN();
 	const double level0 = f0 + own;
 	if (bounded && f0 * slope0 < 0.0 && level0 > 0.0 && own > 0.0)
