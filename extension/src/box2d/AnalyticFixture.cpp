@@ -122,11 +122,12 @@ const AnalyticProxyShape* Proxy(const b2Fixture* fixture)
 }
 
 b2Vec2 F(Vec2 v) { return b2Vec2(float(v.x), float(v.y)); }
-} // namespace
 
-b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const AnalyticFixtureDef& analytic)
+// CreateAnalyticFixture's checks of its arguments, in the order their errors are reported: the
+// body and the world, the shapes, the local pose, the material, the body's pose, the patch
+// parameters.
+void CheckFixtureArguments(b2Body* body, const b2FixtureDef& def, const AnalyticFixtureDef& analytic)
 {
-	AnalyticContact::Install(); // also links the registration into every program that creates one
 	if (!body)
 		throw MisuseError("CreateAnalyticFixture: the body is null");
 	if (body->GetWorld()->IsLocked())
@@ -156,7 +157,12 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 		throw InvalidParameter("CreateAnalyticFixture", "patchTolerance", "must be finite and >= 0", analytic.patchTolerance);
 	if (!std::isfinite(analytic.patchMinWidth) || analytic.patchMinWidth < 0.0)
 		throw InvalidParameter("CreateAnalyticFixture", "patchMinWidth", "must be finite and >= 0", analytic.patchMinWidth);
-	const Shape& shape = *analytic.shape;
+}
+
+// The particle's size and reach against Box2D's absolute tolerances and float positions and mass
+// data; its own mass data (about the body origin) when it fits.
+b2MassData CheckFitsBox2DFloats(const Shape& shape, const Pose& local, float density)
+{
 	// Box2D's tolerances are absolute (linear slop 0.005 length units): a smaller particle
 	// cannot be resolved; the fix is a smaller length unit (see the README on millimetres).
 	if (!(shape.BoundingRadius() >= 2.0 * b2_linearSlop))
@@ -181,23 +187,31 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 		                       "units), bounding radius plus |local.p|",
 		                       reach);
 	// Box2D keeps mass data in float: mass and the moment about the body origin must not overflow.
-	const double moment = double(def.density) * shape.Mass().area * reach * reach;
+	const double moment = double(density) * shape.Mass().area * reach * reach;
 	const double most = std::numeric_limits<float>::max(); // compared in double: a cast out of range is undefined
 	if (!(reach < most && moment < most))
 		throw InvalidParameter("CreateAnalyticFixture", "shape", "is too large for Box2D's float mass data, bounding radius",
 		                       shape.BoundingRadius());
 	// Nor underflow: a mass below float's normal range keeps few bits (an ellipse 6.6e-40 wide,
 	// found by the world fuzzer), and its inverse overflows.
-	const b2MassData own = AnalyticMassData(shape, local, def.density);
-	if (def.density > 0.0f)
+	const b2MassData own = AnalyticMassData(shape, local, density);
+	if (density > 0.0f)
 	{
-		const float moment = float(double(def.density) * shape.Mass().polarMoment); // about the centroid
+		const float moment = float(double(density) * shape.Mass().polarMoment); // about the centroid
 		if (!(own.mass >= std::numeric_limits<float>::min() && moment >= std::numeric_limits<float>::min()))
 			throw InvalidParameter("CreateAnalyticFixture", "shape",
 			                       "is too thin (or 'density' too low) for Box2D's float mass data: its mass or moment "
 			                       "is below float's normal range, mass",
-			                       double(def.density) * shape.Mass().area);
+			                       double(density) * shape.Mass().area);
 	}
+	return own;
+}
+
+// The body's float moment about its centre, with this fixture added, checked before Box2D
+// asserts on it.
+void CheckMomentAboutCentre(const b2Body* body, const b2FixtureDef& def, const b2MassData& own, const Shape& shape,
+                            const Pose& local)
+{
 	// b2Body::ResetMassData, which CreateFixture calls, moves the body's float moment about its
 	// origin to its centre (I − m·|c|²) and asserts that it stays positive. Far from the body's
 	// centre a small particle's own moment is lost in that difference (as a Box2D circle's is), so
@@ -227,7 +241,13 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 			                       "about it is lost to rounding (move the body origin nearer), distance",
 			                       Length(ToWorld(local, shape.Mass().centroid)));
 	}
+}
 
+// The proxy polygon's vertices in the body frame of the shape, before they are fitted inside
+// it; `insetFits`: whether they are the surface points moved in by Box2D's skin (else the
+// surface points themselves).
+std::vector<Vec2> ProxyCore(const Shape& shape, bool& insetFits)
+{
 	// The proxy: Box2D's time of impact stops bodies when proxy cores come within
 	// totalRadius − 3·slop and expects its position solver to leave them at totalRadius − slop,
 	// so the proxy needs a skin like Box2D's polygons (b2_polygonRadius). Its core is the polygon
@@ -237,7 +257,7 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 	const double skin = b2_polygonRadius;
 	const auto samples = shape.Samples(AnalyticProxyShape::kMaxProxyVertices);
 	std::vector<Vec2> points;
-	bool insetFits = true;
+	insetFits = true;
 	auto inside = [&](Vec2 q, Vec2 p) { return shape.Level(q) < shape.SurfaceLevel() && Dot(q, p) > 0.0; };
 	for (Vec2 p : samples->point)
 	{
@@ -265,12 +285,19 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 		throw InvalidParameter("CreateAnalyticFixture", "shape",
 		                       "has surface samples that span no area (the proxy polygon needs 3 distinct vertices), vertices",
 		                       double(points.size()));
+	return points;
+}
+
+// Pull the vertices of `points` (the proxy's core, rounded by `radius`) whose edges or corners
+// leave the shape towards the origin until the rounded polygon lies inside it (at most 200
+// rounds).
+void FitProxyInside(const Shape& shape, std::vector<Vec2>& points, double radius)
+{
 	// The rounded proxy must lie inside the true shape: Box2D drops a time of impact whose
 	// contact is not touching when it gets there (b2World::SolveTOI), so a proxy reaching past
 	// the true shape lets fast particles pass. Convex shapes fit as built; a hull bridges concave
 	// parts (the heart's notch), so pull the vertices of edges that leave the shape towards the
 	// origin until it fits.
-	const double radius = insetFits ? skin : 0.0;
 	for (int iteration = 0; iteration < 200; ++iteration)
 	{
 		const std::vector<int> outside = VerticesOutside(shape, points, radius);
@@ -280,6 +307,22 @@ b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const An
 			points[i] = 0.99 * points[i];
 		points = ConvexHull(points);
 	}
+}
+} // namespace
+
+b2Fixture* CreateAnalyticFixture(b2Body* body, const b2FixtureDef& def, const AnalyticFixtureDef& analytic)
+{
+	AnalyticContact::Install(); // also links the registration into every program that creates one
+	CheckFixtureArguments(body, def, analytic);
+	const Pose& local = analytic.local;
+	const Shape& shape = *analytic.shape;
+	const b2MassData own = CheckFitsBox2DFloats(shape, local, def.density);
+	CheckMomentAboutCentre(body, def, own, shape, local);
+
+	bool insetFits = true;
+	std::vector<Vec2> points = ProxyCore(shape, insetFits);
+	const double radius = insetFits ? b2_polygonRadius : 0.0;
+	FitProxyInside(shape, points, radius);
 	for (Vec2& p : points)
 		p = ToWorld(local, p);
 	auto* data = new AnalyticFixtureData;

@@ -335,8 +335,8 @@ struct EllipsePairAnswer
 };
 
 // The point of the multiplier for pairs up to aspect 16, where H's condition is at most 256 and
-// H's own x keeps the point at rounding level (b2a_bench_pairs, warm 10:1 motions: 6e-15 of the
-// size) without refining steps; with ContactFromLevel's points where `points` asks for them.
+// H's own x keeps the point at rounding level without refining steps (docs/benchmarks.md has
+// the errors); with ContactFromLevel's points where `points` asks for them.
 void PointOfMultiplier(const EllipsePair& e, const Pose& pa, const Pose& pb, const MultiplierRoot& m, EllipsePairPoints* points,
                        EllipsePairAnswer& ans)
 {

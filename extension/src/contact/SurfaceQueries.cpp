@@ -41,10 +41,10 @@ namespace
 // bracket's end where f ≥ 0 (beyond the crossing from inside, before it from outside) find
 // it. Where any of this fails (no bounds, lo ≤ 0, f not monotone along the way at an iterate,
 // an iterate leaving the bracket, no convergence in 30 steps) it returns false and the march
-// decides. (On b2a_bench_pairs' heart–heart poses the march, guided, spent 3.9
-// disc bounds and 2.1 levels on a crossing before its bracketed Newton steps; this decides 69 %
-// of the crossings, with 2.14 derivative evaluations each. Most of the others run near the
-// heart's axis, where its level has its |x|^{2/3} kink and no curvature bound.)
+// decides. (The march evaluates disc bounds and levels before it has a bracket; this has one
+// from the start, and decides most of the crossings a heart's grid contact asks for. Most of
+// the others run near the heart's axis, where its level has its |x|^{2/3} kink and no
+// curvature bound.)
 bool CrossingByCurvature(const Shape& shape, Vec2 x, Vec2 u, double f0, double p, double sMax, double xtol, double& root)
 {
 	const double own = shape.SurfaceLevel();
@@ -99,9 +99,8 @@ bool CrossingByCurvature(const Shape& shape, Vec2 x, Vec2 u, double f0, double p
 		// on the bracket and W its width, Taylor about s puts Newton's iterate within a e² of
 		// the crossing, e the error before, and e ≤ |δ| + aWe, so e ≤ 2|δ| for aW ≤ 1/2 and
 		// Newton's error is at most 4aδ²; Halley's iterate lies |δ||x|/(1 − x) ≤ 2aδ² from
-		// Newton's. So within 6aδ². (Halley's steps and this stop: 2.14 derivative evaluations a
-		// crossing of b2a_bench_pairs' heart–heart poses, where Newton's, evaluating for its
-		// last, tiny step, took 3.34.)
+		// Newton's. So within 6aδ². (So the last, tiny step is never evaluated, as a stop on
+		// the step's length alone would evaluate it.)
 		const double a = curvature / (2.0 * std::fabs(slope));
 		if (std::fabs(step) <= xtol || (a * width <= 0.5 && 6.0 * a * newton * newton <= xtol))
 		{
@@ -119,37 +118,39 @@ double FirstSurfaceCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 d
 	return FirstSurfaceCrossingFrom(shape, pose, X, dir, sMax, f0, std::numeric_limits<double>::quiet_NaN());
 }
 
-double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax, double f0, double slope0)
+namespace
+{
+// FirstSurfaceCrossingFrom for a convex shape (f0 finite and not 0, sMax positive and finite).
+double ConvexCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax, double f0)
 {
 	const double own = shape.SurfaceLevel();
 	auto f = [&](double s) { return shape.Level(ToBody(pose, X + s * dir)) - own; };
-	if (!IsFinite(dir))
-		return -1.0; // (as when f0 was the level at X + 0·dir, NaN for such a dir)
-	if (f0 == 0.0)
-		return 0.0;
-	if (!std::isfinite(f0) || !(sMax > 0.0) || !std::isfinite(sMax))
-		return -1.0;
-	if (shape.IsConvex())
+	// The shape's own far crossing where it has one: leaving along dir from inside, or
+	// entering from outside, which is the far crossing of the reversed line.
+	const Vec2 xb = ToBody(pose, X), db = InvRotate(pose.q, dir);
+	double t = 0.0;
+	if (f0 < 0.0 ? shape.FarCrossing(xb, db, t) : shape.FarCrossing(xb, -db, t))
 	{
-		// The shape's own far crossing where it has one: leaving along dir from inside, or
-		// entering from outside, which is the far crossing of the reversed line.
-		const Vec2 xb = ToBody(pose, X), db = InvRotate(pose.q, dir);
-		double t = 0.0;
-		if (f0 < 0.0 ? shape.FarCrossing(xb, db, t) : shape.FarCrossing(xb, -db, t))
-		{
-			const double s = f0 < 0.0 ? t : -t;
-			return s >= 0.0 && s <= sMax ? s : -1.0;
-		}
-		const double fmax = f(sMax);
-		if (f0 < 0.0)
-			return fmax > 0.0 ? FindRootBrent(f, 0.0, sMax, f0, fmax, 0.0, 200).x : -1.0;
-		// Outside: the level is quasi-convex along the line, so its minimum tells whether the
-		// line enters; the entry is then bracketed by 0 and that minimum.
-		const ScalarResult m = MinimizeBrent(f, 0.0, sMax, 1e-12, 1e-15 * sMax, 200);
-		if (!(m.fx <= 0.0))
-			return -1.0;
-		return FindRootBrent(f, 0.0, m.x, f0, m.fx, 0.0, 200).x;
+		const double s = f0 < 0.0 ? t : -t;
+		return s >= 0.0 && s <= sMax ? s : -1.0;
 	}
+	const double fmax = f(sMax);
+	if (f0 < 0.0)
+		return fmax > 0.0 ? FindRootBrent(f, 0.0, sMax, f0, fmax, 0.0, 200).x : -1.0;
+	// Outside: the level is quasi-convex along the line, so its minimum tells whether the
+	// line enters; the entry is then bracketed by 0 and that minimum.
+	const ScalarResult m = MinimizeBrent(f, 0.0, sMax, 1e-12, 1e-15 * sMax, 200);
+	if (!(m.fx <= 0.0))
+		return -1.0;
+	return FindRootBrent(f, 0.0, m.x, f0, m.fx, 0.0, 200).x;
+}
+
+// FirstSurfaceCrossingFrom for a non-convex shape (f0 finite and not 0, sMax positive and
+// finite).
+double NonConvexCrossing(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax, double f0, double slope0)
+{
+	const double own = shape.SurfaceLevel();
+	auto f = [&](double s) { return shape.Level(ToBody(pose, X + s * dir)) - own; };
 	// Non-convex: march in steps finer than the surface samples, then bracket. Where the shape
 	// bounds its level over a disc, a stretch of the line whose covering disc lies wholly on the
 	// starting side (inside: the upper bound below the surface level; outside: the lower bound
@@ -160,10 +161,9 @@ double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Ve
 	// plain step would step over it.
 	// The crossing in a bracket the march found, to the rounding of the point it gives: X + s·dir
 	// lies |x| from the shape's centre (x = X in the body frame), so a tolerance of a few
-	// roundings of |x| on s·|dir| is all a double point holds. (Relative to s alone, as without
-	// it, a crossing 1e-11 from X, where X is all but on the surface, asked for 1e-27: the level's
-	// own rounding then kept Newton from settling, and the bracket was halved 15 times or so:
-	// 4 % of a heart contact.)
+	// roundings of |x| on s·|dir| is all a double point holds. (Relative to s alone, a crossing
+	// 1e-11 from X, where X is all but on the surface, would ask for 1e-27: the level's own
+	// rounding keeps Newton from settling there, and the bracket is halved some 15 times.)
 	const double len = Length(dir);
 	const double xtol = 4.0 * std::numeric_limits<double>::epsilon() * Length(ToBody(pose, X)) / len;
 	auto root = [&](double from, double to, double ffrom, double fto) {
@@ -205,9 +205,8 @@ double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Ve
 	// left to it, and within a plain step of it the plain step (twice the way left, at most h)
 	// is taken without a bound, where the crossing is expected. The first bound that fails, or
 	// a plain step that finds no crossing, ends the guidance. Doubling its way there instead,
-	// the march spent 8.2 bounds and 3.1 levels on a crossing of b2a_bench_pairs' heart
-	// poses, most of the bounds on stretches that reached past the surface; guided, 3.9 and
-	// 2.1 (and f0, which the caller has, is not computed again).
+	// the march spends most of its bounds on stretches that reach past the surface (and f0,
+	// which the caller has, is not computed again).
 	double est = std::numeric_limits<double>::quiet_NaN();
 	const double level0 = f0 + own;
 	if (bounded && f0 * slope0 < 0.0 && level0 > 0.0 && own > 0.0)
@@ -279,6 +278,20 @@ double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Ve
 			step = expect ? std::max(2.0 * step, 4.0 * h) : 2.0 * step; // (a wrong guess: start afresh)
 	}
 	return -1.0;
+}
+} // namespace
+
+double FirstSurfaceCrossingFrom(const Shape& shape, const Pose& pose, Vec2 X, Vec2 dir, double sMax, double f0, double slope0)
+{
+	if (!IsFinite(dir))
+		return -1.0; // (as when f0 was the level at X + 0·dir, NaN for such a dir)
+	if (f0 == 0.0)
+		return 0.0;
+	if (!std::isfinite(f0) || !(sMax > 0.0) || !std::isfinite(sMax))
+		return -1.0;
+	if (shape.IsConvex())
+		return ConvexCrossing(shape, pose, X, dir, sMax, f0);
+	return NonConvexCrossing(shape, pose, X, dir, sMax, f0, slope0);
 }
 
 RayHit RayCast(const Shape& shape, const Pose& pose, Vec2 p1, Vec2 p2, double maxFraction)

@@ -228,8 +228,8 @@ struct IntegerCrossing
 	}
 
 	/// One Halley step, and the derivatives at its end unless it ended the search. (It and the
-	/// constructor are forced inline: GCC kept them out of line for their two call sites, the
-	/// crossing's state went through memory, and a warm n = 4 contact took 3 % longer.)
+	/// constructor are forced inline: GCC keeps them out of line for their two call sites, and
+	/// the crossing's state then goes through memory on every step.)
 #if defined(__GNUC__)
 	__attribute__((always_inline))
 #endif

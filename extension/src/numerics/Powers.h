@@ -103,8 +103,9 @@ inline CubeRootSplit SplitForCubeRoot(std::uint64_t bits)
 	return split;
 }
 
-/// The real cube root, within 0.51 ulp of the exact one (measured 0.503 over 2e6 draws: all but
-/// the last rounding is exact to 1e-18), with no division: a table cell and a polynomial.
+/// The real cube root, within 0.51 ulp of the exact one (all but the last rounding is exact to
+/// 1e-18; docs/benchmarks.md has the measured error), with no division: a table cell and a
+/// polynomial.
 /// |x| = 2^(3q + r)·m with m ∈ [1, 8) (m's exponent is r, the exponent's residue mod 3), so
 /// ∛|x| = 2^q·∛m. The cell of m (r and the top 7 bits of the fraction) gives c ≈ ∛m with c³
 /// exact, so d = m/c³ − 1 = (m − c³)·(1/c³) has an exact difference (Sterbenz: m and c³ are
@@ -112,13 +113,11 @@ inline CubeRootSplit SplitForCubeRoot(std::uint64_t bits)
 /// error of 1e-18 in d. Then ∛m = c·(1 + d)^{1/3} with the binomial series
 ///   (1 + d)^{1/3} − 1 = d/3 − d²/9 + 5d³/81 − 10d⁴/243 + 22d⁵/729 − 154d⁶/6561 + …,
 /// whose next term is below 3e-19 at |d| ≤ 4e-3, evaluated in pairs of terms (Estrin) for a
-/// shorter dependency chain; c + c·δ rounds once at the end. (Two Halley steps and a Newton step
-/// from a bit-pattern guess, as before, were three divisions in a chain: 29 ns of latency
-/// against 19.)
-/// glibc's std::cbrt goes through frexp and ldexp, and was 40 % of a heart–heart contact,
-/// whose level has |x|^{2/3}. Outside 1e-290 to 1e290, infinities and NaN go to std::cbrt;
-/// zero is its own root (a heart's level at its centre and on its axis, asked for on every
-/// heart contact, where std::cbrt cost as much as the rest of the level).
+/// shorter dependency chain; c + c·δ rounds once at the end. (Halley's or Newton's steps from a
+/// bit-pattern guess need a division each, all in one chain of latency.) glibc's std::cbrt
+/// goes through frexp and ldexp, slow for a heart's level, which takes |x|^{2/3} at every
+/// evaluation. Outside 1e-290 to 1e290, infinities and NaN go to std::cbrt; zero is its own
+/// root (a heart's level at its centre and on its axis, asked for on every heart contact).
 inline double CubeRoot(double x)
 {
 	const double ax = std::fabs(x);
@@ -148,13 +147,13 @@ inline double InverseCubeRootScale(const CubeRootSplit& split)
 	return inverseScale;
 }
 
-/// CubeRoot(x) for x > 0, and with it x^{−1/3} within 2 ulp (1.63 measured), with no division:
+/// CubeRoot(x) for x > 0, and with it x^{−1/3} within 2 ulp, with no division:
 /// from the same cell, 1/∛m = (1/c)·(1 + d)^{−1/3}, where 1/c = c²·(1/c³) (c² exact, 1/c³ the
 /// cell's) and
 ///   (1 + d)^{−1/3} − 1 = −d/3 + 2d²/9 − 14d³/81 + 35d⁴/243 − 91d⁵/729 + 728d⁶/6561 − …
 /// (the next term below 2e-18 at |d| ≤ 4e-3), times 2^{−q} from the bits of 2^q. A heart's
 /// derivatives divided by |x|^{1/3} and by |x|^{4/3}: two divisions in a chain after the root,
-/// in the latency of every Newton step on its level (2 % of a heart contact). Outside CubeRoot's
+/// in the latency of every Newton step on its level. Outside CubeRoot's
 /// main range, 1/CubeRoot(x) (infinite at 0).
 inline double CubeRootWithInverse(double x, double& inverse)
 {
@@ -257,10 +256,10 @@ inline __m128d CubeRootPair(__m128d ax)
 /// CubeRootGuess (within 3.3 %), one Newton step y ← (2y + x/y²)/3: it lands at or above the
 /// root (the arithmetic mean of y, y and x/y² is at least their geometric mean, ∛x) and squares
 /// the relative error, to 1.0e-3 at most (over the mantissas, every exponent residue). The upper
-/// end takes a margin for the step's rounding, the lower one divides by 1 + 2e-3. (A second step,
-/// as before 2026-12-05, made them 2e-5 apart, which the bounds' own slack, of the order of the
-/// disc's radius, does not notice: its division in the latency chain of every disc bound was
-/// 2.6 % of a heart–heart contact's time.) x = 0 has the exact bounds 0 (a disc across the
+/// end takes a margin for the step's rounding, the lower one divides by 1 + 2e-3. (A second step
+/// would bring them within 2e-5 of each other, which the bounds' own slack, of the order of the
+/// disc's radius, does not notice, for a division in the latency chain of every disc bound.)
+/// x = 0 has the exact bounds 0 (a disc across the
 /// heart's axis: a tenth of the grid's bounds); outside 1e-290 to 1e290 and for non-finite x
 /// both come from std::cbrt with the margin.
 inline void CubeRootBounds(double x, double& lower, double& upper)
