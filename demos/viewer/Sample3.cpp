@@ -42,6 +42,21 @@ void DrawBodyMesh(MeshBatch& batch, const BodyMesh& mesh, const Pose3& pose, con
 	}
 }
 
+void DrawArrow3(MeshBatch& batch, Vec3 from, Vec3 to, const Colour3& c)
+{
+	batch.AddOverlayLine(from, to, c);
+	const Vec3 d = to - from;
+	const double length = Length(d);
+	if (!(length > 0.0))
+		return;
+	// Two directions across the shaft: any vector not along it, crossed with it, and again.
+	const Vec3 u = d / length, side = Normalize(Cross(u, std::fabs(u.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0))),
+	           other = Cross(u, side);
+	const Vec3 back = to - 0.25 * d;
+	for (Vec3 s : {side, -1.0 * side, other, -1.0 * other})
+		batch.AddOverlayLine(to, back + 0.1 * length * s, c);
+}
+
 void DrawBoxAndAxes(MeshBatch& batch, const Box3& box)
 {
 	const Colour3 edge{0.45f, 0.45f, 0.5f, 1.0f};

@@ -31,6 +31,9 @@ BodyMesh MakeBodyMesh(const Shape3& shape, int samples);
 /// Add the mesh at a pose to the batch, shaded in colour c.
 void DrawBodyMesh(MeshBatch& batch, const BodyMesh& mesh, const Pose3& pose, const Colour3& c);
 
+/// An arrow from `from` to `to` over the scene: its shaft and a head of four lines.
+void DrawArrow3(MeshBatch& batch, Vec3 from, Vec3 to, const Colour3& c);
+
 /// The twelve edges of a box (dim), and its three axes from the lower corner in red, green and blue.
 void DrawBoxAndAxes(MeshBatch& batch, const Box3& box);
 

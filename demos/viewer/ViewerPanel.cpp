@@ -96,12 +96,16 @@ void Viewer::PanelContents()
 		StepSettings& s = Step();
 		StepSettings edit = s;
 		// A 3D sample steps its own bodies: only the rate and the steps per frame apply.
+		if (m_sample3)
+			ImGui::SetNextItemWidth(120.0f);
 		ImGui::InputDouble(m_sample3 ? "steps per time unit" : "Hz", &edit.hertz, 0.0, 0.0, "%.0f");
 		if (!m_sample3)
 		{
 			ImGui::SliderInt("velocity iterations", &edit.velocityIterations, 1, 50);
 			ImGui::SliderInt("position iterations", &edit.positionIterations, 0, 50);
 		}
+		if (m_sample3)
+			ImGui::SetNextItemWidth(120.0f);
 		ImGui::SliderInt("steps per frame", &edit.stepsPerFrame, 1, 50);
 		if (!m_sample3)
 		{
@@ -220,6 +224,7 @@ void Viewer::CameraPanel3()
 		return;
 	ImGui::Checkbox("turn by itself", &m_orbit.autoOrbit);
 	float degrees = float(m_orbit.orbitPerFrame * 180.0 / kPi);
+	ImGui::SetNextItemWidth(120.0f);
 	if (ImGui::SliderFloat("degrees a frame", &degrees, -2.0f, 2.0f, "%.2f"))
 		m_orbit.orbitPerFrame = double(degrees) * kPi / 180.0;
 	if (ImGui::Button("reset view (Home)"))

@@ -232,7 +232,8 @@ int main(int argc, char** argv)
 	CLI::App app{"b2a_viewer: an interactive viewer of b2analytic's samples in the style of Box2D's testbed.\n"
 	             "Keys: P pause, O single step, R restart, [ ] previous and next sample, Home reset view, arrows pan,\n"
 	             "Z X or the wheel zoom, right drag pans, left drag moves a body, Shift and drag launches a bomb,\n"
-	             "Tab hides the panel, Esc quits.",
+	             "Tab hides the panel, Esc quits. In 3D samples left drag or the arrows turn the camera, Z X or the wheel\n"
+	             "move it nearer and farther.",
 	             "b2a_viewer"};
 	Options o;
 	std::vector<std::string> keys;

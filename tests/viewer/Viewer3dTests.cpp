@@ -119,6 +119,11 @@ TEST_CASE("3D sample: Figure 17 flies to the exact first contact, within 1e-3 ms
 	t.view->DrawScene();
 	CHECK(t.view->Batch3().Triangles().size() > 2 * 3 * 2000);
 	CHECK(t.view->Batch3().Points().size() == 1);
+	// The normal's arrow starts at the contact point.
+	REQUIRE(t.view->Batch3().OverlayLines().size() == 10);
+	const MeshVertex& start = t.view->Batch3().OverlayLines()[0];
+	CHECK(start.x == t.view->Batch3().Points()[0].x);
+	CHECK(start.z == t.view->Batch3().Points()[0].z);
 	CHECK(t.view->Batch().Triangles().empty()); // nothing through b2Draw
 	const WorldHealth h = t.view->Health();
 	CHECK(h.bodies == 2);

@@ -56,7 +56,7 @@ public:
 		if (AtContact())
 		{
 			// The contact point and the normal from particle i to particle j, over the meshes.
-			batch.AddOverlayLine(m_contact.point, m_contact.point + 4.0 * m_contact.normal, Colour3{1.0f, 1.0f, 1.0f, 1.0f});
+			DrawArrow3(batch, m_contact.point, m_contact.point + 4.0 * m_contact.normal, Colour3{1.0f, 1.0f, 1.0f, 1.0f});
 			batch.AddPoint(m_contact.point, 9.0f, Colour3{1.0f, 0.2f, 0.6f, 1.0f});
 		}
 		else
