@@ -2,11 +2,9 @@
 // contact from the 3D time-of-impact solver, shaded snapshots, meshes, and fixed stepping.
 #include "common/CommandLine.h"
 #include "common/DemoCommon.h"
+#include "common/Figure17Scene.h"
 #include "common/Plot.h"
 #include "common/Render3d.h"
-
-#include "b2analytic/3d/SuperellipsoidShape.h"
-#include "b2analytic/3d/TimeOfImpact3.h"
 
 #include <chrono>
 #include <cmath>
@@ -44,21 +42,7 @@ coordinates in mm; ParaView, MeshLab or Blender open them).
 
 Json Vec(Vec3 v) { return Json::array({v.x, v.y, v.z}); }
 
-struct Scene
-{
-	std::shared_ptr<SuperellipsoidShape> a, b;
-	Motion3 ma, mb;
-};
-
-Scene Figure17()
-{
-	Scene s;
-	s.a = MakeSuperellipsoid(4, 4, 4, 6, 6, 12);
-	s.b = MakeSuperellipsoid(2, 3, 2, 8, 8, 8);
-	s.ma = Motion3{Pose3(Vec3(-10, -15, -10), EulerZXZ(kPi / 9, kPi / 8, kPi / 7)), Vec3(-20, -10, -15), Vec3(20, -30, 2)};
-	s.mb = Motion3{Pose3(Vec3(-20, -25, -20), EulerZXZ(kPi / 6, kPi / 5, kPi / 4)), Vec3(10, 20, 15), Vec3(-10, 20, -2)};
-	return s;
-}
+using Scene = Figure17Scene;
 
 // The first step time k·dt at which the particles touch, or −1 (within tMax).
 double FixedStepping(const Scene& s, double dt, double tMax, int& steps)
@@ -72,28 +56,6 @@ double FixedStepping(const Scene& s, double dt, double tMax, int& steps)
 			return k * dt;
 	}
 	return -1.0;
-}
-
-// A world box holding both particles over [0, tEnd], rounded out to the tick spacing.
-Box3 SceneBox(const Scene& s, double tEnd, double tick)
-{
-	Box3 box{Vec3(1e300, 1e300, 1e300), Vec3(-1e300, -1e300, -1e300)};
-	for (int k = 0; k <= 40; ++k)
-	{
-		const double t = tEnd * k / 40;
-		for (const Box3& b : {s.a->ComputeAABB(s.ma.At(t)), s.b->ComputeAABB(s.mb.At(t))})
-			for (int i = 0; i < 3; ++i)
-			{
-				box.lower[i] = std::min(box.lower[i], b.lower[i]);
-				box.upper[i] = std::max(box.upper[i], b.upper[i]);
-			}
-	}
-	for (int i = 0; i < 3; ++i)
-	{
-		box.lower[i] = tick * std::floor(box.lower[i] / tick);
-		box.upper[i] = tick * std::ceil(box.upper[i] / tick);
-	}
-	return box;
 }
 
 struct Snapshot
@@ -141,8 +103,8 @@ int main(int argc, char** argv)
 	CommandLine cli("b2a_demo_superellipsoids", kHelp);
 	const DemoOptions opt = cli.Parse(argc, argv);
 	Progress progress("b2a_demo_superellipsoids");
-	const Scene s = Figure17();
-	const double tMax = 1.0, paperTime = 0.1924;
+	const Scene s = MakeFigure17Scene();
+	const double tMax = 1.0, paperTime = kFigure17PaperTime;
 
 	const auto t0 = std::chrono::steady_clock::now();
 	const TimeOfImpactResult3 toi = TimeOfImpact(*s.a, s.ma, *s.b, s.mb, tMax);
@@ -160,7 +122,7 @@ int main(int argc, char** argv)
 		snaps.push_back({0.02 * k, false});
 	snaps.push_back({toi.time, true});
 	View3 view;
-	view.box = SceneBox(s, toi.time, 5.0);
+	view.box = Figure17SceneBox(s, toi.time, 5.0);
 	const int samples = opt.quick ? 400 : 1600, figureSamples = opt.quick ? 300 : 700;
 	Json files = Json::array();
 	std::string figure;

@@ -57,23 +57,30 @@ GLuint Compile(GLenum type, const char* source)
 }
 } // namespace
 
-GlRenderer::GlRenderer()
+unsigned CompileProgram(const char* vertexShader, const char* fragmentShader)
 {
-	const GLuint vs = Compile(GL_VERTEX_SHADER, kVertexShader), fs = Compile(GL_FRAGMENT_SHADER, kFragmentShader);
-	m_program = glCreateProgram();
-	glAttachShader(m_program, vs);
-	glAttachShader(m_program, fs);
-	glLinkProgram(m_program);
+	const GLuint vs = Compile(GL_VERTEX_SHADER, vertexShader), fs = Compile(GL_FRAGMENT_SHADER, fragmentShader);
+	const GLuint program = glCreateProgram();
+	glAttachShader(program, vs);
+	glAttachShader(program, fs);
+	glLinkProgram(program);
 	glDeleteShader(vs);
 	glDeleteShader(fs);
 	GLint ok = 0;
-	glGetProgramiv(m_program, GL_LINK_STATUS, &ok);
+	glGetProgramiv(program, GL_LINK_STATUS, &ok);
 	if (!ok)
 	{
 		char log[1024] = {};
-		glGetProgramInfoLog(m_program, sizeof(log), nullptr, log);
+		glGetProgramInfoLog(program, sizeof(log), nullptr, log);
+		glDeleteProgram(program);
 		throw std::runtime_error(std::string("b2a_viewer: OpenGL program does not link: ") + log);
 	}
+	return program;
+}
+
+GlRenderer::GlRenderer()
+{
+	m_program = CompileProgram(kVertexShader, kFragmentShader);
 	m_projection = glGetUniformLocation(m_program, "projection");
 	glGenVertexArrays(3, m_arrays);
 	glGenBuffers(3, m_buffers);

@@ -31,6 +31,10 @@ private:
 	unsigned m_buffers[3] = {0, 0, 0};
 };
 
+/// Compile and link a shader program from its two sources; throws std::runtime_error with the GL
+/// log on failure.
+unsigned CompileProgram(const char* vertexShader, const char* fragmentShader);
+
 /// Read the default framebuffer (what the window shows) and write it as a PNG, top row first.
 /// Returns "" or a message naming the file.
 std::string WriteScreenshot(const std::string& path, int width, int height);

@@ -20,6 +20,7 @@ const std::vector<SampleEntry>& Samples()
 		{"Stacking", "Ellipses on a slope", MakeEllipseSlopeSample},
 		{"Stacking", "Mixed with Box2D shapes", MakeMixedSample},
 		{"Sandbox", "Shape editor", MakeSandboxSample},
+		{"3D", "Figure 17 superellipsoids", MakeFigure17Sample},
 	};
 	return table;
 }

@@ -32,8 +32,8 @@ bool Finite(b2Vec2 v)
 
 Viewer::Viewer(Settings& settings) : m_settings(settings)
 {
-	m_camera.width = settings.windowWidth;
-	m_camera.height = settings.windowHeight;
+	m_camera.width = m_orbit.width = settings.windowWidth;
+	m_camera.height = m_orbit.height = settings.windowHeight;
 	const int index = FindSample(settings.sample);
 	LoadSample(index >= 0 ? index : 0);
 }
@@ -47,6 +47,8 @@ void Viewer::LoadSample(int index)
 	m_mouseTarget = nullptr;
 	m_twin.reset();
 	m_sample = table[size_t(m_index)].factory();
+	m_sample3 = dynamic_cast<Sample3*>(m_sample.get());
+	m_orbiting = false;
 	m_defaults = m_sample->Defaults();
 	const std::string key = SampleKey(table[size_t(m_index)]);
 	m_settings.sample = key;
@@ -93,6 +95,7 @@ void Viewer::SetCompare(CompareMode mode)
 	{
 		// Both copies start together from the sample's starting state.
 		m_sample = Samples()[size_t(m_index)].factory();
+		m_sample3 = dynamic_cast<Sample3*>(m_sample.get());
 		m_twin = Samples()[size_t(m_index)].factory();
 		m_twin->SwitchToPolygons(true);
 	}
@@ -108,14 +111,26 @@ void Viewer::SetCompare(CompareMode mode)
 
 void Viewer::SetWindowSize(int width, int height)
 {
-	m_camera.width = std::max(width, 1);
-	m_camera.height = std::max(height, 1);
+	m_camera.width = m_orbit.width = std::max(width, 1);
+	m_camera.height = m_orbit.height = std::max(height, 1);
 	m_settings.windowWidth = std::max(width, 200);
 	m_settings.windowHeight = std::max(height, 200);
 }
 
 void Viewer::ResetView()
 {
+	if (m_sample3)
+	{
+		// The starting angles, the box in view left of the panel; turning by itself stays as set.
+		OrbitCamera fresh;
+		fresh.width = m_orbit.width;
+		fresh.height = m_orbit.height;
+		fresh.autoOrbit = m_orbit.autoOrbit;
+		fresh.orbitPerFrame = m_orbit.orbitPerFrame;
+		m_orbit = fresh;
+		m_orbit.Fit(m_sample3->ViewBox(), m_settings.showPanel ? kPanelWidth + 20.0f : 0.0f);
+		return;
+	}
 	b2Vec2 hi = m_defaults.viewHi;
 	if (m_twin)
 		hi += TwinOffset();
@@ -138,6 +153,8 @@ void Viewer::OnKey(int key, int action, int mods)
 {
 	(void)mods;
 	if (action == GLFW_RELEASE)
+		return;
+	if (m_sample3 && OnKey3(key))
 		return;
 	const float pan = 0.1f * m_camera.halfHeight;
 	const bool press = action == GLFW_PRESS;
@@ -170,8 +187,30 @@ void Viewer::OnKey(int key, int action, int mods)
 	}
 }
 
+bool Viewer::OnKey3(int key)
+{
+	// Arrows turn the 3D camera as a 25-pixel drag does; Z and X move it farther and nearer.
+	switch (key)
+	{
+	case GLFW_KEY_LEFT: m_orbit.Orbit(-25.0, 0.0); return true;
+	case GLFW_KEY_RIGHT: m_orbit.Orbit(25.0, 0.0); return true;
+	case GLFW_KEY_UP: m_orbit.Orbit(0.0, -25.0); return true;
+	case GLFW_KEY_DOWN: m_orbit.Orbit(0.0, 25.0); return true;
+	case GLFW_KEY_Z: m_orbit.Zoom(1.1); return true;
+	case GLFW_KEY_X: m_orbit.Zoom(1.0 / 1.1); return true;
+	default: return false;
+	}
+}
+
 void Viewer::OnMouseButton(int button, int action, int mods)
 {
+	if (m_sample3)
+	{
+		// Left drag turns the camera about the scene (the 3D bodies are not dragged).
+		if (button == GLFW_MOUSE_BUTTON_LEFT)
+			m_orbiting = action == GLFW_PRESS;
+		return;
+	}
 	const b2Vec2 world = m_camera.ScreenToWorld(m_cursor);
 	if (button == GLFW_MOUSE_BUTTON_LEFT)
 	{
@@ -199,7 +238,14 @@ void Viewer::OnMouseButton(int button, int action, int mods)
 
 void Viewer::OnCursor(b2Vec2 screen)
 {
+	const b2Vec2 moved = screen - m_cursor;
 	m_cursor = screen;
+	if (m_sample3)
+	{
+		if (m_orbiting)
+			m_orbit.Orbit(moved.x, moved.y);
+		return;
+	}
 	const b2Vec2 world = m_camera.ScreenToWorld(screen);
 	if (m_rightDown)
 	{
@@ -213,6 +259,11 @@ void Viewer::OnCursor(b2Vec2 screen)
 
 void Viewer::OnScroll(double dy)
 {
+	if (m_sample3)
+	{
+		m_orbit.Zoom(dy > 0.0 ? 1.0 / 1.1 : 1.1);
+		return;
+	}
 	m_camera.ZoomAbout(m_cursor, dy > 0.0 ? 1.0f / 1.1f : 1.1f);
 }
 
@@ -225,6 +276,8 @@ void Viewer::Update()
 		m_twin->Step(s, m_settings.pause, m_singleStep);
 	m_singleStep = false;
 	m_times.step = Millis(t0);
+	if (m_sample3 && !m_orbiting)
+		m_orbit.Advance();
 	if (m_sample->TakeViewRequest())
 	{
 		m_defaults = m_sample->Defaults();
@@ -245,6 +298,13 @@ void Viewer::DrawScene()
 {
 	const auto t0 = Clock::now();
 	m_batch.Clear();
+	m_batch3.Clear();
+	if (m_sample3)
+	{
+		m_sample3->Draw3(m_batch3, m_settings.draw);
+		m_times.draw = Millis(t0);
+		return;
+	}
 	m_batch.SetOffset(b2Vec2(0.0f, 0.0f));
 	// About one outline point per 2.5 pixels of a typical body's circumference, 12 to 48.
 	const float pixels = m_defaults.bodySize / m_camera.UnitsPerPixel();
@@ -285,6 +345,25 @@ void Viewer::RecordFrameTime(double ms, double renderMs)
 WorldHealth Viewer::Health() const
 {
 	WorldHealth h;
+	if (m_sample3)
+	{
+		// The bodies' poses: finite, and their centres within the view box grown by its size.
+		const Box3 box = m_sample3->ViewBox();
+		const Vec3 margin = box.upper - box.lower;
+		for (const Pose3& pose : m_sample3->Bodies())
+		{
+			++h.bodies;
+			if (!IsValidPose(pose))
+				++h.nonFinite;
+			else
+				for (int i = 0; i < 3; ++i)
+					if (pose.p[i] < box.lower[i] - margin[i] || pose.p[i] > box.upper[i] + margin[i])
+					{
+						++h.escaped;
+						break;
+					}
+		}
+	}
 	for (const Sample* s : {m_sample.get(), m_twin.get()})
 	{
 		if (!s)
@@ -307,6 +386,14 @@ WorldHealth Viewer::Health() const
 std::vector<b2Vec2> Viewer::BodyScreenPoints() const
 {
 	std::vector<b2Vec2> points;
+	if (m_sample3)
+		for (const Pose3& pose : m_sample3->Bodies())
+		{
+			double depth = 0.0;
+			const b2Vec2 p = m_orbit.WorldToScreen(pose.p, &depth);
+			if (depth > 0.0)
+				points.push_back(p);
+		}
 	for (const Sample* s : {m_sample.get(), m_twin.get()})
 	{
 		if (!s)

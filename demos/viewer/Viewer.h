@@ -5,8 +5,11 @@
 
 #include "Camera.h"
 #include "DrawBatch.h"
+#include "MeshBatch.h"
 #include "MethodStats.h"
+#include "OrbitCamera.h"
 #include "Sample.h"
+#include "Sample3.h"
 #include "Settings.h"
 
 #include <memory>
@@ -60,6 +63,8 @@ public:
 	int SampleIndex() const { return m_index; }
 	/// The current sample (the analytic one when side by side).
 	Sample& Current() { return *m_sample; }
+	/// The current sample as a 3D sample, or null (2D samples).
+	Sample3* Current3() { return m_sample3; }
 	/// The 8-gon copy shown side by side, or null.
 	Sample* Twin() { return m_twin.get(); }
 	/// Where the twin is drawn relative to the sample.
@@ -75,6 +80,8 @@ public:
 
 	/// The camera.
 	Camera& View() { return m_camera; }
+	/// The 3D samples' camera (window size kept with the 2D camera's).
+	OrbitCamera& Orbit() { return m_orbit; }
 	/// The window's size in pixels.
 	void SetWindowSize(int width, int height);
 	/// Show the sample's view box (Home).
@@ -86,7 +93,7 @@ public:
 	void OnMouseButton(int button, int action, int mods);
 	/// The cursor moved to a screen point (pixels from the top-left corner).
 	void OnCursor(b2Vec2 screen);
-	/// The wheel turned: zoom about the cursor.
+	/// The wheel turned: zoom about the cursor (3D: move the camera nearer or farther).
 	void OnScroll(double dy);
 	/// Esc was pressed.
 	bool QuitRequested() const { return m_quit; }
@@ -101,6 +108,8 @@ public:
 	void RecordFrameTime(double milliseconds, double renderMilliseconds = 0.0);
 	/// What DrawScene drew.
 	const DrawBatch& Batch() const { return m_batch; }
+	/// What DrawScene drew of a 3D sample (empty for 2D samples).
+	const MeshBatch& Batch3() const { return m_batch3; }
 	/// Frame times.
 	const FrameTimes& Times() const { return m_times; }
 	/// The panel's rectangle in pixels (x, y, width, height), or zero when hidden.
@@ -113,7 +122,7 @@ public:
 	/// NaN and escape check of the world(s).
 	WorldHealth Health() const;
 	/// Screen points of the moving (dynamic and kinematic) bodies' centres of mass that lie inside
-	/// their own fixtures.
+	/// their own fixtures (3D: the bodies' centres in front of the camera).
 	std::vector<b2Vec2> BodyScreenPoints() const;
 
 	/// The panel's width in pixels.
@@ -126,12 +135,18 @@ private:
 	void PanelContents();
 	void StatisticsPanel();
 	void TextOverlay();
+	void CameraPanel3();
+	bool OnKey3(int key);
 	Settings& m_settings;
 	int m_index = 0;
 	std::unique_ptr<Sample> m_sample, m_twin;
+	Sample3* m_sample3 = nullptr; // m_sample when it is a 3D sample
 	SampleDefaults m_defaults;
 	Camera m_camera;
 	DrawBatch m_batch;
+	OrbitCamera m_orbit;
+	MeshBatch m_batch3;
+	bool m_orbiting = false; // left drag turns the 3D camera
 	FrameTimes m_times;
 	std::vector<double> m_recentFrames, m_recentSteps;
 	MethodStats m_methods, m_twinMethods;

@@ -3,6 +3,8 @@
 #include "SampleRegistry.h"
 #include "Viewer.h"
 
+#include "b2analytic/Math.h" // kPi
+
 #include <imgui.h>
 
 #include <cstdio>
@@ -86,18 +88,31 @@ void Viewer::PanelContents()
 		ImGui::EndCombo();
 	}
 	m_sample->Panel();
+	if (m_sample3)
+		CameraPanel3();
 
 	if (ImGui::CollapsingHeader("Step", ImGuiTreeNodeFlags_DefaultOpen))
 	{
 		StepSettings& s = Step();
 		StepSettings edit = s;
-		ImGui::InputDouble("Hz", &edit.hertz, 0.0, 0.0, "%.0f");
-		ImGui::SliderInt("velocity iterations", &edit.velocityIterations, 1, 50);
-		ImGui::SliderInt("position iterations", &edit.positionIterations, 0, 50);
+		// A 3D sample steps its own bodies: only the rate and the steps per frame apply.
+		if (m_sample3)
+			ImGui::SetNextItemWidth(120.0f);
+		ImGui::InputDouble(m_sample3 ? "steps per time unit" : "Hz", &edit.hertz, 0.0, 0.0, "%.0f");
+		if (!m_sample3)
+		{
+			ImGui::SliderInt("velocity iterations", &edit.velocityIterations, 1, 50);
+			ImGui::SliderInt("position iterations", &edit.positionIterations, 0, 50);
+		}
+		if (m_sample3)
+			ImGui::SetNextItemWidth(120.0f);
 		ImGui::SliderInt("steps per frame", &edit.stepsPerFrame, 1, 50);
-		ImGui::Checkbox("sleep", &edit.sleep);
-		ImGui::Checkbox("warm starting", &edit.warmStarting);
-		ImGui::Checkbox("time of impact", &edit.continuous);
+		if (!m_sample3)
+		{
+			ImGui::Checkbox("sleep", &edit.sleep);
+			ImGui::Checkbox("warm starting", &edit.warmStarting);
+			ImGui::Checkbox("time of impact", &edit.continuous);
+		}
 		// A typed value out of range is refused with the reason, never clamped.
 		if (const std::string why = CheckStepSettings(edit); why.empty())
 		{
@@ -137,18 +152,22 @@ void Viewer::PanelContents()
 	{
 		DrawSettings& d = m_settings.draw;
 		ImGui::Checkbox("shapes", &d.shapes);
-		ImGui::Checkbox("joints", &d.joints);
-		ImGui::Checkbox("AABBs", &d.aabbs);
-		ImGui::Checkbox("contact points", &d.contactPoints);
-		ImGui::Checkbox("contact normals", &d.contactNormals);
-		ImGui::Checkbox("contact impulses", &d.contactImpulses);
-		ImGui::Checkbox("centres of mass", &d.centresOfMass);
+		if (!m_sample3) // the rest are Box2D's (a 3D sample has no Box2D bodies)
+		{
+			ImGui::Checkbox("joints", &d.joints);
+			ImGui::Checkbox("AABBs", &d.aabbs);
+			ImGui::Checkbox("contact points", &d.contactPoints);
+			ImGui::Checkbox("contact normals", &d.contactNormals);
+			ImGui::Checkbox("contact impulses", &d.contactImpulses);
+			ImGui::Checkbox("centres of mass", &d.centresOfMass);
+		}
 		ImGui::Checkbox("statistics", &d.statistics);
-		ImGui::Checkbox("profile", &d.profile);
+		if (!m_sample3)
+			ImGui::Checkbox("profile", &d.profile);
 	}
 	if (m_settings.draw.statistics)
 		StatisticsPanel();
-	if (m_settings.draw.profile && ImGui::CollapsingHeader("Box2D profile (last step)", ImGuiTreeNodeFlags_DefaultOpen))
+	if (!m_sample3 && m_settings.draw.profile && ImGui::CollapsingHeader("Box2D profile (last step)", ImGuiTreeNodeFlags_DefaultOpen))
 	{
 		const b2Profile& p = m_sample->LastProfile();
 		ProfileRow("step", p.step);
@@ -161,7 +180,10 @@ void Viewer::PanelContents()
 		ProfileRow("broad-phase", p.broadphase);
 	}
 	if (ImGui::CollapsingHeader("Keys and mouse"))
-		ImGui::TextWrapped("P pause, O single step, R restart, [ ] previous and next sample, Home reset view, arrows pan, "
+		ImGui::TextWrapped(m_sample3 ? "P pause, O single step, R restart, [ ] previous and next sample, Home reset view, left drag or "
+		                               "arrows turn the camera about the scene, the wheel or Z X move it nearer and farther, Tab "
+		                               "hides the panel, Esc quits." :
+		                               "P pause, O single step, R restart, [ ] previous and next sample, Home reset view, arrows pan, "
 		                   "Z X or the wheel zoom, right drag pans, left drag moves a body, Shift and left drag launches a "
 		                   "bomb (Space drops one), Tab hides the panel, Esc quits.");
 }
@@ -173,6 +195,11 @@ void Viewer::StatisticsPanel()
 	const FrameTimes& t = m_times;
 	ImGui::Text("frame %.1f ms (mean %.1f, max %.1f)", t.frame, t.meanFrame, t.maxFrame);
 	ImGui::Text("step %.1f ms, draw %.1f ms, render %.1f ms", t.meanStep, t.draw, t.render);
+	if (m_sample3)
+	{
+		ImGui::Text("%d shaded triangles", int(m_batch3.Triangles().size() / 3));
+		return; // no Box2D world to count, no Box2D contacts to count by method
+	}
 	WorldCounts(m_sample->World());
 	if (m_twin)
 	{
@@ -189,6 +216,20 @@ void Viewer::StatisticsPanel()
 		ImGui::TextUnformatted("8-gons:");
 		MethodTable("twin_methods", m_twinMethods);
 	}
+}
+
+void Viewer::CameraPanel3()
+{
+	if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
+		return;
+	ImGui::Checkbox("turn by itself", &m_orbit.autoOrbit);
+	float degrees = float(m_orbit.orbitPerFrame * 180.0 / kPi);
+	ImGui::SetNextItemWidth(120.0f);
+	if (ImGui::SliderFloat("degrees a frame", &degrees, -2.0f, 2.0f, "%.2f"))
+		m_orbit.orbitPerFrame = double(degrees) * kPi / 180.0;
+	if (ImGui::Button("reset view (Home)"))
+		ResetView();
+	ImGui::TextWrapped("Left drag turns the camera about the scene, the wheel moves it nearer or farther.");
 }
 
 void Viewer::TextOverlay()

@@ -1,6 +1,7 @@
 // b2a_viewer: an interactive viewer in the style of Box2D's testbed (GLFW, OpenGL 3.3, Dear
 // ImGui). With --frames it runs that many frames and exits, writing a screenshot and a report
 // on request: the headless tests run it so under Xvfb.
+#include "GlMeshRenderer.h"
 #include "GlRenderer.h"
 #include "SampleRegistry.h"
 #include "Viewer.h"
@@ -170,6 +171,7 @@ int Run(const Options& o, Settings& settings)
 		glfwSetFramebufferSizeCallback(window, ResizeCallback);
 
 		GlRenderer renderer;
+		GlMeshRenderer meshRenderer;
 		for (int frame = 1; !glfwWindowShouldClose(window) && !viewer.QuitRequested(); ++frame)
 		{
 			const auto t0 = std::chrono::steady_clock::now();
@@ -186,6 +188,7 @@ int Run(const Options& o, Settings& settings)
 			glClearColor(Viewer::kBackground[0], Viewer::kBackground[1], Viewer::kBackground[2], 1.0f);
 			glClear(GL_COLOR_BUFFER_BIT);
 			renderer.Draw(viewer.Batch(), viewer.View());
+			meshRenderer.Draw(viewer.Batch3(), viewer.Orbit());
 			ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 			const bool last = o.frames > 0 && frame >= o.frames;
 			if (last && !o.screenshot.empty())
@@ -229,7 +232,8 @@ int main(int argc, char** argv)
 	CLI::App app{"b2a_viewer: an interactive viewer of b2analytic's samples in the style of Box2D's testbed.\n"
 	             "Keys: P pause, O single step, R restart, [ ] previous and next sample, Home reset view, arrows pan,\n"
 	             "Z X or the wheel zoom, right drag pans, left drag moves a body, Shift and drag launches a bomb,\n"
-	             "Tab hides the panel, Esc quits.",
+	             "Tab hides the panel, Esc quits. In 3D samples left drag or the arrows turn the camera, Z X or the wheel\n"
+	             "move it nearer and farther.",
 	             "b2a_viewer"};
 	Options o;
 	std::vector<std::string> keys;

@@ -160,12 +160,39 @@ TEST_CASE("headless: superellipse-stack") { CheckRun("superellipse-stack", "", 9
 TEST_CASE("headless: ellipses-on-a-slope") { CheckRun("ellipses-on-a-slope", "", 8); }
 TEST_CASE("headless: mixed-with-box2d-shapes") { CheckRun("mixed-with-box2d-shapes", "", 64); }
 TEST_CASE("headless: shape-editor") { CheckRun("shape-editor", "", 6); }
+TEST_CASE("headless: figure-17-superellipsoids")
+{
+	CheckRun("figure-17-superellipsoids", "", 2);
+	// After 300 frames (one step of 0.001 ms each) the pair has stopped at its first contact
+	// (about 0.192 ms): both particles are shaded in their colours, blue (i) and orange (j), and
+	// the contact point is marked in magenta over them, left of the panel and below the text.
+	Json r;
+	std::ifstream(kOut + "/figure-17-superellipsoids.json") >> r;
+	CHECK(r["readings"]["touching"] == 1.0);
+	const Image im = ReadPng(kOut + "/figure-17-superellipsoids.png");
+	int blue = 0, orange = 0, magenta = 0;
+	for (int y = 110; y < im.height; ++y)
+		for (int x = 0; x < int(r["panel"][0].get<double>()) - 4; ++x)
+		{
+			const unsigned char* p = im.At(x, y);
+			blue += p[2] > p[0] + 30 && p[2] > p[1] + 10;
+			orange += p[0] > p[2] + 60 && p[0] > p[1] + 20 && p[1] > p[2];
+			magenta += p[0] > 200 && p[1] < 100 && p[2] > 100;
+		}
+	CAPTURE(blue);
+	CAPTURE(orange);
+	CAPTURE(magenta);
+	CHECK(blue > 2000);
+	CHECK(orange > 100);
+	CHECK(magenta >= 25);
+}
 TEST_CASE("headless: packing side by side with Box2D 8-gons") { CheckRun("packing", "--compare side-by-side", 600); }
 
 TEST_CASE("headless: every registered sample has its headless case above")
 {
 	const std::set<std::string> tested = {"hopper-discharge",   "packing",         "beverloo-channel",        "contact-cases", "collision-cases",
-	                                      "superellipse-stack", "ellipses-on-a-slope", "mixed-with-box2d-shapes", "shape-editor"};
+	                                      "superellipse-stack", "ellipses-on-a-slope", "mixed-with-box2d-shapes", "shape-editor",
+	                                      "figure-17-superellipsoids"};
 	for (const b2a::viewer::SampleEntry& e : b2a::viewer::Samples())
 		CHECK(tested.count(b2a::viewer::SampleKey(e)) == 1);
 	CHECK(tested.size() == b2a::viewer::Samples().size());

@@ -23,4 +23,7 @@ std::unique_ptr<Sample> MakeEllipseSlopeSample();      ///< ellipses rocking on 
 std::unique_ptr<Sample> MakeMixedSample();             ///< analytic particles with Box2D's boxes, circles, edges, chains
 std::unique_ptr<Sample> MakeSandboxSample();           ///< the shape editor: spawn any shape into a box
 
+// 3D (drawn by the mesh renderer through the orbiting camera).
+std::unique_ptr<Sample> MakeFigure17Sample(); ///< the paper's Figure 17: two superellipsoids colliding
+
 } // namespace b2a::viewer
