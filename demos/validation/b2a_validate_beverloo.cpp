@@ -43,7 +43,8 @@ the 2D form of Mankoc et al. (2007), Q = C rho sqrt(g) [1 - exp(-b (D - d)/d)/2]
 with C and b free; rho is the bed's areal bulk density (packing fraction times the particles'
 areal density 1e-3 g/mm^2), d the kind's size (major axis, diameter, width).
 
---refit CSV reads a flow.csv of an earlier run and redoes the fits and pictures without
+--fit-up-to K leaves the outlets wider than K major axes out of the fits (they are still
+plotted and listed). --refit CSV reads a flow.csv of an earlier run and redoes the fits and pictures without
 simulating.
 
 Writes to DIR: summary.json (per kind: bed, outlets with Q and its standard error, both fits
@@ -179,7 +180,7 @@ struct KindResult
 	CurveFit beverloo, mankoc;
 };
 
-KindResult Analyse(const std::string& name, const std::vector<Block>& rows)
+KindResult Analyse(const std::string& name, const std::vector<Block>& rows, double fitUpTo)
 {
 	KindResult r;
 	r.name = name;
@@ -211,10 +212,13 @@ KindResult Analyse(const std::string& name, const std::vector<Block>& rows)
 			j += n;
 		r.jams.push_back(j);
 	}
-	if (r.D.size() >= 3)
+	const size_t fitted = size_t(std::upper_bound(r.D.begin(), r.D.end(), fitUpTo) - r.D.begin());
+	if (fitted >= 3)
 	{
-		r.beverloo = FitCurve(BeverlooModel(r.rho, kGravity, r.d), r.D, r.Q, r.Qse, {0.6, 1.5});
-		r.mankoc = FitCurve(MankocModel(r.rho, kGravity, r.d), r.D, r.Q, r.Qse, {0.6, 0.5});
+		const std::vector<double> D(r.D.begin(), r.D.begin() + long(fitted)), Q(r.Q.begin(), r.Q.begin() + long(fitted)),
+			Qse(r.Qse.begin(), r.Qse.begin() + long(fitted));
+		r.beverloo = FitCurve(BeverlooModel(r.rho, kGravity, r.d), D, Q, Qse, {0.6, 1.5});
+		r.mankoc = FitCurve(MankocModel(r.rho, kGravity, r.d), D, Q, Qse, {0.6, 0.5});
 	}
 	return r;
 }
@@ -238,7 +242,7 @@ Json FitJson(const CurveFit& f, const char* first, const char* second)
 }
 
 // summary.json and the pictures from the blocks of every run.
-Json Report(const std::vector<Block>& rows, const std::string& out, std::string& line)
+Json Report(const std::vector<Block>& rows, double fitUpTo, const std::string& out, std::string& line)
 {
 	std::vector<std::string> names;
 	for (const Block& b : rows)
@@ -251,7 +255,7 @@ Json Report(const std::vector<Block>& rows, const std::string& out, std::string&
 	char buffer[256];
 	for (const std::string& name : names)
 	{
-		const KindResult r = Analyse(name, rows);
+		const KindResult r = Analyse(name, rows, fitUpTo);
 		const char* colour = palette::series[index % 6];
 		const Marker marker = markers[index % 3];
 		++index;
@@ -266,7 +270,7 @@ Json Report(const std::vector<Block>& rows, const std::string& out, std::string&
 		const double scale = r.rho * std::sqrt(kGravity) * std::pow(r.d, 1.5);
 		for (size_t i = 0; i < r.D.size(); ++i)
 		{
-			outlets.push_back({{"D_mm", r.D[i]}, {"D_over_d", r.D[i] / r.d}, {"Q_g_per_s", r.Q[i]}, {"Q_se", r.Qse[i]},
+			outlets.push_back({{"D_mm", r.D[i]}, {"D_over_d", r.D[i] / r.d}, {"Q_g_per_s", r.Q[i]}, {"Q_se", r.Qse[i]}, {"fitted", r.D[i] <= fitUpTo},
 			                   {"particles_per_s", r.Q[i] / (r.area * kDensity)}, {"blocks", r.blocks[i]}, {"jams", r.jams[i]}});
 			grows = grows && (i == 0 || r.Q[i] > r.Q[i - 1]);
 			x.push_back(r.D[i] / r.d);
@@ -293,8 +297,9 @@ Json Report(const std::vector<Block>& rows, const std::string& out, std::string&
 			flow.push_back({buffer, colour, fx, fb, false});
 			std::snprintf(buffer, sizeof(buffer), "%ss: Mankoc et al., b = %.2f ± %.2f", name.c_str(), r.mankoc.p[1], r.mankoc.se[1]);
 			flow.push_back({buffer, palette::series[(index + 2) % 6], fx, fm, false});
-			resB.push_back({name + "s", colour, x, r.beverloo.normalisedResiduals, true, marker});
-			resM.push_back({name + "s", colour, x, r.mankoc.normalisedResiduals, true, marker});
+			const std::vector<double> xf(x.begin(), x.begin() + long(r.beverloo.normalisedResiduals.size()));
+			resB.push_back({name + "s", colour, xf, r.beverloo.normalisedResiduals, true, marker});
+			resM.push_back({name + "s", colour, xf, r.mankoc.normalisedResiduals, true, marker});
 			std::snprintf(buffer, sizeof(buffer), "%s k = %.2f ± %.2f (chi2/dof %.1f), Mankoc b = %.2f ± %.2f (%.1f); ", name.c_str(),
 			              r.beverloo.p[1], r.beverloo.se[1], r.beverloo.dof > 0 ? r.beverloo.chi2 / r.beverloo.dof : 0.0, r.mankoc.p[1],
 			              r.mankoc.se[1], r.mankoc.dof > 0 ? r.mankoc.chi2 / r.mankoc.dof : 0.0);
@@ -302,7 +307,7 @@ Json Report(const std::vector<Block>& rows, const std::string& out, std::string&
 		}
 	}
 	WriteText(out + "/flow.svg", LinePlot(flow, "Silo flow on a bed of constant height, and fits of two laws", "outlet width D / d",
-	                                      "Q / (ρ √g d^1.5)"));
+	                                      "Q / (ρ √g d^1.5)", true, true));
 	WriteText(out + "/residuals_beverloo.svg", LinePlot(resB, "Beverloo fit: (Q − fit) / standard error", "outlet width D / d",
 	                                                     "normalised residual"));
 	WriteText(out + "/residuals_mankoc.svg", LinePlot(resM, "Mankoc et al. fit: (Q − fit) / standard error", "outlet width D / d",
@@ -318,6 +323,7 @@ int main(int argc, char** argv)
 	RunSettings rs;
 	int seeds = 2, threads = 1;
 	std::string refit;
+	double fitUpTo = 1e9;
 	CommandLine cli("b2a_validate_beverloo", kHelp);
 	cli.Add("--kinds", kindNames, {"ellipse", "disk", "superellipse"}, {"ellipse", "disk"}, "NAME,...",
 	        "particle kinds (default ellipse,disk,superellipse; quick ellipse,disk)", OneOf({"ellipse", "disk", "superellipse"}));
@@ -330,6 +336,7 @@ int main(int argc, char** argv)
 	cli.Add("--width", rs.width, 80.0, 40.0, "W", "silo width in mm (default 80, quick 40)", RealNumber(5.0, 1000.0));
 	cli.Add("--bed", rs.bed, 50.0, 20.0, "H", "bed depth in mm (default 50, quick 20)", RealNumber(2.0, 1000.0));
 	cli.Add("--threads", threads, "N", "threads computing contacts before each step (default 1; same run for any N)", WholeNumber(1, 256));
+	cli.Add("--fit-up-to", fitUpTo, "K", "fit only the outlets up to K major axes (default: all)", RealNumber(0.5, 100.0));
 	cli.Add("--refit", refit, "CSV", "refit a flow.csv of an earlier run instead of simulating", CLI::Validator());
 	const DemoOptions opt = cli.Parse(argc, argv);
 	const auto wallStart = std::chrono::steady_clock::now();
@@ -404,7 +411,8 @@ int main(int argc, char** argv)
 	summary["seeds"] = seeds;
 	summary["silo"] = {{"width_mm", rs.width}, {"bed_mm", rs.bed}, {"transient_s", rs.transient}, {"window_s", rs.window},
 	                   {"blocks", rs.blocks}, {"jam_s", rs.jamTime}, {"time_step_s", 2e-4}};
-	summary["kinds"] = Report(rows, opt.out, line);
+	summary["fit_up_to_mm"] = fitUpTo < 1e9 ? Json(2.0 * fitUpTo) : Json(nullptr);
+	summary["kinds"] = Report(rows, 2.0 * fitUpTo, opt.out, line);
 	summary["paper"] = {{"k", 2.21}, {"note", "the paper's ellipses in its 800 mm channel; its particle parameters are not given"}};
 	summary["run_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
 	WriteJson(opt.out + "/summary.json", summary);
