@@ -43,7 +43,9 @@ GranularScene::GranularScene(const GranularConfig& c) : m_config(c)
 	{
 		const double s = 1.0 + c.sizeSpread * (2.0 * U(rng) - 1.0);
 		const double a = a0 * s, b = a / c.aspect;
-		ShapePtr shape = c.exponent == 2.0 ? ShapePtr(MakeEllipse(a, b)) : ShapePtr(MakeSuperellipse(a, b, c.exponent, c.exponent));
+		ShapePtr shape = c.exponent != 2.0 ? ShapePtr(MakeSuperellipse(a, b, c.exponent, c.exponent))
+		                 : c.aspect == 1.0  ? ShapePtr(MakeCircle(a))
+		                                    : ShapePtr(MakeEllipse(a, b));
 		const int row = i / perRow, col = i % perRow;
 		const double x = -0.5 * (perRow - 1) * cell + col * cell + 0.1 * c.width * (U(rng) - 0.5);
 		const double y = c.width + row * cell + 0.1 * c.width * U(rng);
@@ -195,7 +197,7 @@ Json GranularScene::SummaryHead(const std::string& demo, const DemoOptions& opti
 	j["quick"] = options.quick;
 	j["seed"] = options.seed;
 	j["particles"] = c.particles;
-	j["particle"] = {{"shape", c.exponent == 2.0 ? "ellipse" : "superellipse"}, {"exponent", c.exponent}, {"mean_width_mm", c.width},
+	j["particle"] = {{"shape", c.exponent != 2.0 ? "superellipse" : c.aspect == 1.0 ? "disk" : "ellipse"}, {"exponent", c.exponent}, {"mean_width_mm", c.width},
 	                 {"aspect", c.aspect}, {"size_spread", c.sizeSpread}};
 	if (c.polygonVertices > 0)
 		j["particle"]["box2d_polygon_vertices"] = c.polygonVertices;
