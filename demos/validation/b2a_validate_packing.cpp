@@ -13,8 +13,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
-#include <map>
+#include <cstdlib>
+#include <fstream>
 #include <mutex>
 #include <random>
 #include <string>
@@ -50,7 +50,8 @@ Writes to DIR: runs.csv (one line per run), summary.csv and summary.json (mean, 
 deviation and standard error over seeds per family, friction and count, with the published
 values), packing_friction.svg (fraction against friction), packing_count.svg (against the
 count, when there are several), and a snapshot of each family's first run at the highest
-friction and count (snapshot_<family>.svg).
+friction and count (snapshot_<family>.svg). --replot DIR runs nothing and writes the tables and
+plots of DIR/runs.csv (an earlier run's) to --out.
 )";
 
 // One family of particles.
@@ -304,23 +305,25 @@ struct Group
 };
 
 // φ against the friction (at the largest count) for each family, with ±1 standard deviation
-// bars over the seeds and the published ranges as bars of their own.
+// bars over the seeds and the published ranges as boxes.
 std::string FrictionPlot(const std::vector<Group>& groups, const std::vector<std::string>& families, int count)
 {
 	std::vector<Series> series;
 	Series bars{"±1 s.d. over seeds", palette::black, {}, {}, false};
-	for (const std::string& name : families)
+	for (size_t k = 0; k < families.size(); ++k)
 	{
-		const Family& f = FindFamily(name);
+		const Family& f = FindFamily(families[k]);
 		Series s{f.label, f.colour, {}, {}, true, f.marker};
+		// The families side by side, 0.012 apart in μ, so that their bars stay apart.
+		const double shift = 0.012 * (double(k) - 0.5 * double(families.size() - 1));
 		for (const Group& g : groups)
-			if (g.family == name && g.particles == count && std::isfinite(g.phi.mean))
+			if (g.family == families[k] && g.particles == count && std::isfinite(g.phi.mean))
 			{
-				s.x.push_back(g.friction);
+				s.x.push_back(g.friction + shift);
 				s.y.push_back(g.phi.mean);
 				if (std::isfinite(g.phi.sd))
 				{
-					bars.x.insert(bars.x.end(), {g.friction, g.friction, std::nan("")});
+					bars.x.insert(bars.x.end(), {g.friction + shift, g.friction + shift, std::nan("")});
 					bars.y.insert(bars.y.end(), {g.phi.mean - g.phi.sd, g.phi.mean + g.phi.sd, std::nan("")});
 				}
 			}
@@ -328,20 +331,25 @@ std::string FrictionPlot(const std::vector<Group>& groups, const std::vector<std
 	}
 	if (!bars.x.empty())
 		series.push_back(bars);
-	Series published{"published ranges (see packing.md)", "#888888", {}, {}, false};
-	for (const Reference& r : References())
-		if (std::find(families.begin(), families.end(), r.family) != families.end())
-		{
-			// A bracket over the friction range, at the low and high ends of φ.
-			const double x0 = r.frictionLo - 0.03, x1 = r.frictionHi + 0.03;
-			published.x.insert(published.x.end(), {x0, x1, std::nan(""), x0, x1, std::nan("")});
-			published.y.insert(published.y.end(), {r.lo, r.lo, std::nan(""), r.hi, r.hi, std::nan("")});
-		}
-	if (!published.x.empty())
-		series.push_back(published);
+	// Each published range as a box over its friction range (±0.02 where it is one value), in
+	// its family's colour.
+	for (const std::string& name : families)
+	{
+		const Family& f = FindFamily(name);
+		Series box{f.label + ": published range", f.colour, {}, {}, false};
+		for (const Reference& r : References())
+			if (r.family == name)
+			{
+				const double x0 = r.frictionLo - 0.02, x1 = r.frictionHi + 0.02;
+				box.x.insert(box.x.end(), {x0, x1, x1, x0, x0, std::nan("")});
+				box.y.insert(box.y.end(), {r.lo, r.lo, r.hi, r.hi, r.lo, std::nan("")});
+			}
+		if (!box.x.empty())
+			series.push_back(box);
+	}
 	char title[120];
 	std::snprintf(title, sizeof(title), "Packing fraction of poured particles (%d particles)", count);
-	return LinePlot(series, title, "friction coefficient μ", "area fraction φ in the window");
+	return LinePlot(series, title, "friction coefficient μ (families side by side)", "area fraction φ in the window");
 }
 
 // φ against the count for each family and friction.
@@ -368,57 +376,22 @@ std::string CountPlot(const std::vector<Group>& groups, const std::vector<std::s
 	return LinePlot(series, "Packing fraction against the number of particles", "particles", "area fraction φ in the window",
 	                false, true);
 }
-} // namespace
 
-int main(int argc, char** argv)
+
+// One run to do; `snapshot` is empty for none.
+struct Task
 {
-	std::vector<std::string> families;
-	std::vector<double> frictions;
-	std::vector<int> counts;
-	int seeds = 0, jobs = 1;
-	RunSettings settings;
-	std::vector<std::string> names;
-	for (const Family& f : Families())
-		names.push_back(f.name);
-	CommandLine cli("b2a_validate_packing", kHelp);
-	cli.Add("--families", families, std::vector<std::string>{"disk", "ellipse15", "ellipse20", "superell", "demo"},
-	        std::vector<std::string>{"disk", "ellipse15"}, "LIST",
-	        "families (default disk,ellipse15,ellipse20,superell,demo; quick disk,ellipse15)", ListOf(OneOf(names)));
-	cli.Add("--frictions", frictions, std::vector<double>{0.0, 0.1, 0.5, 1.0}, std::vector<double>{0.0, 1.0}, "LIST",
-	        "friction coefficients (default 0,0.1,0.5,1; quick 0,1)", ListOf(RealNumber(0.0, 10.0)));
-	cli.Add("--counts", counts, std::vector<int>{800}, std::vector<int>{250}, "LIST",
-	        "numbers of particles (default 800, quick 250)", ListOf(WholeNumber(10, 20000)));
-	cli.Add("--seeds", seeds, 3, 1, "N", "seeds per family, friction and count: --seed, --seed + 1, ... (default 3, quick 1)",
-	        WholeNumber(1, 1000));
-	cli.Add("--margin", settings.margin, 4.0, 4.0, "D", "window margin in mean particle diameters (default 4)",
-	        RealNumber(0.0, 100.0));
-	cli.Add("--duration", settings.duration, 2.0, 1.0, "T", "simulated seconds at most per run (default 2, quick 1)",
-	        RealNumber(0.05, 100.0));
-	cli.Add("--jobs", jobs, "N", "runs in parallel, each on its own thread (default 1)", WholeNumber(1, 256));
-	const DemoOptions opt = cli.Parse(argc, argv);
-	const auto wallStart = std::chrono::steady_clock::now();
-	Progress progress("b2a_validate_packing");
+	std::string family;
+	double friction;
+	int particles;
+	std::uint64_t seed;
+	std::string snapshot;
+};
 
-	// Every run, in order; each family's snapshot from its run at the highest friction and count.
-	struct Task
-	{
-		std::string family;
-		double friction;
-		int particles;
-		std::uint64_t seed;
-		std::string snapshot;
-	};
-	std::vector<Task> tasks;
-	const double maxFriction = *std::max_element(frictions.begin(), frictions.end());
-	const int maxCount = *std::max_element(counts.begin(), counts.end());
-	for (const std::string& f : families)
-		for (int n : counts)
-			for (double mu : frictions)
-				for (int k = 0; k < seeds; ++k)
-				{
-					const bool snap = k == 0 && mu == maxFriction && n == maxCount;
-					tasks.push_back({f, mu, n, opt.seed + std::uint64_t(k), snap ? opt.out + "/snapshot_" + f + ".svg" : ""});
-				}
+// Runs the tasks on `jobs` threads, reporting each as it ends.
+std::vector<RunResult> RunAll(const std::vector<Task>& tasks, const RunSettings& settings, int jobs)
+{
+	Progress progress("b2a_validate_packing");
 	std::vector<RunResult> results(tasks.size());
 	std::atomic<size_t> next{0}, done{0};
 	std::mutex lock;
@@ -442,20 +415,81 @@ int main(int argc, char** argv)
 		threads.emplace_back(worker);
 	for (std::thread& t : threads)
 		t.join();
+	return results;
+}
 
-	std::ofstream runs = OpenOutput(opt.out + "/runs.csv");
-	runs << "family,friction,particles,seed,phi,phi_union,box_width_mm,window_width_mm,window_height_mm,surface_mm,"
-	        "mean_diameter_mm,at_rest,settled_at_s,kinetic_ratio,wall_s\n";
+const char* const kRunsHeader = "family,friction,particles,seed,phi,phi_union,box_width_mm,window_width_mm,window_height_mm,"
+                                "surface_mm,mean_diameter_mm,at_rest,settled_at_s,kinetic_ratio,wall_s";
+
+void WriteRuns(const std::string& path, const std::vector<RunResult>& results)
+{
+	std::ofstream runs = OpenOutput(path);
+	runs << kRunsHeader << "\n";
 	for (const RunResult& r : results)
 	{
 		char line[400];
-		std::snprintf(line, sizeof(line), "%s,%g,%d,%llu,%.6f,%.6f,%.3f,%.3f,%.3f,%.3f,%.4f,%d,%.4f,%.3g,%.2f\n", r.family.c_str(),
+		std::snprintf(line, sizeof(line), "%s,%.15g,%d,%llu,%.6f,%.6f,%.3f,%.3f,%.3f,%.3f,%.4f,%d,%.4f,%.3g,%.2f\n", r.family.c_str(),
 		              r.friction, r.particles, (unsigned long long)r.seed, r.phi, r.phiUnion, r.boxWidth, r.windowWidth,
 		              r.windowHeight, r.surface, r.meanDiameter, r.settled ? 1 : 0, r.settledAt, r.kineticRatio, r.wallSeconds);
 		runs << line;
 	}
-	runs.close();
+}
 
+// The runs of an earlier runs.csv (--replot); exits 1 naming the file and line it cannot read.
+std::vector<RunResult> ReadRuns(const std::string& path)
+{
+	std::ifstream in(path);
+	std::string line;
+	if (!in || !std::getline(in, line) || line.rfind(kRunsHeader, 0) != 0)
+	{
+		std::fprintf(stderr, "b2a_validate_packing: --replot: %s is not a runs.csv of this program\n", path.c_str());
+		std::exit(1);
+	}
+	std::vector<RunResult> results;
+	for (int number = 2; std::getline(in, line); ++number)
+	{
+		RunResult r;
+		char family[64] = {};
+		unsigned long long seed = 0;
+		int settled = 0;
+		if (std::sscanf(line.c_str(), "%63[^,],%lf,%d,%llu,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf,%lf,%lf", family, &r.friction, &r.particles,
+		                &seed, &r.phi, &r.phiUnion, &r.boxWidth, &r.windowWidth, &r.windowHeight, &r.surface, &r.meanDiameter,
+		                &settled, &r.settledAt, &r.kineticRatio, &r.wallSeconds) != 15 ||
+		    FindFamily(family).name != family)
+		{
+			std::fprintf(stderr, "b2a_validate_packing: --replot: cannot read line %d of %s: '%s'\n", number, path.c_str(), line.c_str());
+			std::exit(1);
+		}
+		r.family = family;
+		r.seed = seed;
+		r.settled = settled != 0;
+		results.push_back(r);
+	}
+	return results;
+}
+
+// The families, frictions and counts of a set of runs, in the order they first appear.
+void Axes(const std::vector<RunResult>& results, std::vector<std::string>& families, std::vector<double>& frictions,
+          std::vector<int>& counts)
+{
+	families.clear(), frictions.clear(), counts.clear();
+	for (const RunResult& r : results)
+	{
+		if (std::find(families.begin(), families.end(), r.family) == families.end())
+			families.push_back(r.family);
+		if (std::find(frictions.begin(), frictions.end(), r.friction) == frictions.end())
+			frictions.push_back(r.friction);
+		if (std::find(counts.begin(), counts.end(), r.particles) == counts.end())
+			counts.push_back(r.particles);
+	}
+}
+
+std::vector<Group> GroupRuns(const std::vector<RunResult>& results)
+{
+	std::vector<std::string> families;
+	std::vector<double> frictions;
+	std::vector<int> counts;
+	Axes(results, families, frictions, counts);
 	std::vector<Group> groups;
 	for (const std::string& f : families)
 		for (int n : counts)
@@ -471,49 +505,111 @@ int main(int argc, char** argv)
 						phiUnion.push_back(r.phiUnion);
 						settled += r.settled ? 1 : 0;
 					}
+				if (phi.empty())
+					continue;
 				g.phi = Summarise(phi);
 				g.phiUnion = Summarise(phiUnion);
-				g.settledFraction = phi.empty() ? 0.0 : double(settled) / double(phi.size());
+				g.settledFraction = double(settled) / double(phi.size());
 				groups.push_back(g);
 			}
-	std::ofstream summaryCsv = OpenOutput(opt.out + "/summary.csv");
-	summaryCsv << "family,friction,particles,seeds,phi_mean,phi_sd,phi_sem,phi_union_mean,at_rest_fraction\n";
-	Json summary;
-	summary["program"] = "b2a_validate_packing";
-	summary["seed"] = opt.seed;
-	summary["quick"] = opt.quick;
-	summary["families"] = families;
-	summary["frictions"] = frictions;
-	summary["counts"] = counts;
-	summary["seeds"] = seeds;
-	summary["margin_diameters"] = settings.margin;
-	summary["duration_s"] = settings.duration;
+	return groups;
+}
+
+// summary.csv and the groups and published values of summary.json.
+void WriteGroups(const std::string& csvPath, const std::vector<Group>& groups, Json& summary)
+{
+	std::ofstream csv = OpenOutput(csvPath);
+	csv << "family,friction,particles,seeds,phi_mean,phi_sd,phi_sem,phi_union_mean,at_rest_fraction\n";
+	auto number = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
 	Json table = Json::array();
 	for (const Group& g : groups)
 	{
 		char line[300];
 		std::snprintf(line, sizeof(line), "%s,%g,%d,%d,%.5f,%.5f,%.5f,%.5f,%.2f\n", g.family.c_str(), g.friction, g.particles, g.phi.n,
 		              g.phi.mean, g.phi.sd, g.phi.sem, g.phiUnion.mean, g.settledFraction);
-		summaryCsv << line;
-		Json row;
-		row["family"] = g.family;
-		row["friction"] = g.friction;
-		row["particles"] = g.particles;
-		row["seeds"] = g.phi.n;
-		row["phi_mean"] = std::isfinite(g.phi.mean) ? Json(g.phi.mean) : Json(nullptr);
-		row["phi_sd"] = std::isfinite(g.phi.sd) ? Json(g.phi.sd) : Json(nullptr);
-		row["phi_sem"] = std::isfinite(g.phi.sem) ? Json(g.phi.sem) : Json(nullptr);
-		row["phi_union_mean"] = std::isfinite(g.phiUnion.mean) ? Json(g.phiUnion.mean) : Json(nullptr);
-		row["at_rest_fraction"] = g.settledFraction;
-		table.push_back(row);
+		csv << line;
+		table.push_back({{"family", g.family}, {"friction", g.friction}, {"particles", g.particles}, {"seeds", g.phi.n},
+		                 {"phi_mean", number(g.phi.mean)}, {"phi_sd", number(g.phi.sd)}, {"phi_sem", number(g.phi.sem)},
+		                 {"phi_union_mean", number(g.phiUnion.mean)}, {"at_rest_fraction", g.settledFraction}});
 	}
-	summaryCsv.close();
 	summary["groups"] = table;
 	Json refs = Json::array();
 	for (const Reference& r : References())
 		refs.push_back({{"family", r.family}, {"friction_range", {r.frictionLo, r.frictionHi}}, {"phi_range", {r.lo, r.hi}},
 		                {"source", r.source}});
 	summary["published"] = refs;
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+	std::vector<std::string> families;
+	std::vector<double> frictions;
+	std::vector<int> counts;
+	int seeds = 0, jobs = 1;
+	std::string replot;
+	RunSettings settings;
+	std::vector<std::string> names;
+	for (const Family& f : Families())
+		names.push_back(f.name);
+	CommandLine cli("b2a_validate_packing", kHelp);
+	cli.Add("--families", families, std::vector<std::string>{"disk", "ellipse15", "ellipse20", "superell", "demo"},
+	        std::vector<std::string>{"disk", "ellipse15"}, "LIST",
+	        "families (default disk,ellipse15,ellipse20,superell,demo; quick disk,ellipse15)", ListOf(OneOf(names)));
+	cli.Add("--frictions", frictions, std::vector<double>{0.0, 0.1, 0.5, 1.0}, std::vector<double>{0.0, 1.0}, "LIST",
+	        "friction coefficients (default 0,0.1,0.5,1; quick 0,1)", ListOf(RealNumber(0.0, 10.0)));
+	cli.Add("--counts", counts, std::vector<int>{800}, std::vector<int>{250}, "LIST",
+	        "numbers of particles (default 800, quick 250)", ListOf(WholeNumber(10, 20000)));
+	cli.Add("--seeds", seeds, 3, 1, "N", "seeds per family, friction and count: --seed, --seed + 1, ... (default 3, quick 1)",
+	        WholeNumber(1, 1000));
+	cli.Add("--margin", settings.margin, 4.0, 4.0, "D", "window margin in mean particle diameters (default 4)",
+	        RealNumber(0.0, 100.0));
+	cli.Add("--duration", settings.duration, 2.0, 1.0, "T", "simulated seconds at most per run (default 2, quick 1)",
+	        RealNumber(0.05, 100.0));
+	cli.Add("--jobs", jobs, "N", "runs in parallel, each on its own thread (default 1)", WholeNumber(1, 256));
+	cli.App().add_option("--replot", replot,
+	                     "run nothing: read DIR/runs.csv of an earlier run and write its tables and plots to --out")
+		->type_name("DIR");
+	const DemoOptions opt = cli.Parse(argc, argv);
+	const auto wallStart = std::chrono::steady_clock::now();
+
+	std::vector<RunResult> results;
+	if (!replot.empty())
+	{
+		results = ReadRuns(replot + "/runs.csv");
+		Axes(results, families, frictions, counts);
+	}
+	else
+	{
+		// Every run, in order; each family's snapshot from its first run at the highest friction and count.
+		std::vector<Task> tasks;
+		const double maxFriction = *std::max_element(frictions.begin(), frictions.end());
+		const int maxCount = *std::max_element(counts.begin(), counts.end());
+		for (const std::string& f : families)
+			for (int n : counts)
+				for (double mu : frictions)
+					for (int k = 0; k < seeds; ++k)
+					{
+						const bool snap = k == 0 && mu == maxFriction && n == maxCount;
+						tasks.push_back({f, mu, n, opt.seed + std::uint64_t(k), snap ? opt.out + "/snapshot_" + f + ".svg" : ""});
+					}
+		results = RunAll(tasks, settings, jobs);
+	}
+	WriteRuns(opt.out + "/runs.csv", results);
+	const std::vector<Group> groups = GroupRuns(results);
+	const int maxCount = *std::max_element(counts.begin(), counts.end());
+	Json summary;
+	summary["program"] = "b2a_validate_packing";
+	summary["replotted_from"] = replot.empty() ? Json(nullptr) : Json(replot + "/runs.csv");
+	summary["seed"] = opt.seed;
+	summary["quick"] = opt.quick;
+	summary["families"] = families;
+	summary["frictions"] = frictions;
+	summary["counts"] = counts;
+	summary["runs"] = results.size();
+	summary["margin_diameters"] = settings.margin;
+	summary["duration_s"] = settings.duration;
+	WriteGroups(opt.out + "/summary.csv", groups, summary);
 	summary["run_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
 	WriteJson(opt.out + "/summary.json", summary);
 	WriteText(opt.out + "/packing_friction.svg", FrictionPlot(groups, families, maxCount));
@@ -528,7 +624,7 @@ int main(int argc, char** argv)
 			std::snprintf(item, sizeof(item), "%s%s mu=%g %.3f", line.empty() ? "" : ", ", g.family.c_str(), g.friction, g.phi.mean);
 			line += item;
 		}
-	std::printf("b2a_validate_packing: %zu runs, packing fractions at %d particles: %s; tables and plots in %s\n", tasks.size(),
+	std::printf("b2a_validate_packing: %zu runs, packing fractions at %d particles: %s; tables and plots in %s\n", results.size(),
 	            maxCount, line.c_str(), opt.out.c_str());
 	return 0;
 }
