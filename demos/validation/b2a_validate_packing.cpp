@@ -46,7 +46,8 @@ Families (sizes: the small particle's area equals a 2 mm disk's):
              sizes uniform within +-10 %
   disk10     disks of 2 mm, sizes uniform within +-10 % (nearly monodisperse: they order)
 
-Writes to DIR: runs.csv (one line per run), summary.csv and summary.json (mean, standard
+Writes to DIR: runs.csv (one line per run, with flat_order: <cos 2 theta> of the long axes'
+angles from the horizontal in the window, 1 all lying flat, 0 isotropic), summary.csv and summary.json (mean, standard
 deviation and standard error over seeds per family, friction and count, with the published
 values), packing_friction.svg (fraction against friction), packing_count.svg (against the
 count, when there are several), and a snapshot of each family's first run at the highest
@@ -94,6 +95,9 @@ struct RunResult
 	std::uint64_t seed = 0;
 	double phi = std::nan("");      // Σ particle area inside the window / window area
 	double phiUnion = std::nan(""); // covered fraction of the window (overlaps counted once)
+	// ⟨cos 2θ⟩ of the long axes' angles θ from the horizontal over the particles centred in the
+	// window: 1 all lying flat, 0 isotropic, −1 all upright (NaN for disks).
+	double flatOrder = std::nan("");
 	double boxWidth = 0.0, windowWidth = 0.0, windowHeight = 0.0, surface = 0.0, meanDiameter = 0.0;
 	double settledAt = 0.0, kineticRatio = 0.0, wallSeconds = 0.0;
 	bool settled = false;
@@ -222,6 +226,20 @@ RunResult RunOne(const Family& f, double friction, int count, std::uint64_t seed
 	const WindowFraction w = MeasureWindow(packing, window, r.meanDiameter / 40.0);
 	r.phi = w.sum;
 	r.phiUnion = w.covered;
+	if (f.aspect != 1.0)
+	{
+		// Every family's long axis is its body x axis (a > b).
+		double sum = 0.0;
+		int n = 0;
+		for (const ParticleState& p : packing)
+			if (p.pose.p.x > window.lower.x && p.pose.p.x < window.upper.x && p.pose.p.y > window.lower.y &&
+			    p.pose.p.y < window.upper.y)
+			{
+				sum += p.pose.q.c * p.pose.q.c - p.pose.q.s * p.pose.q.s;
+				++n;
+			}
+		r.flatOrder = n > 0 ? sum / n : std::nan("");
+	}
 	r.windowWidth = w.width;
 	r.windowHeight = w.height;
 	if (!settings.snapshot.empty())
@@ -300,7 +318,7 @@ struct Group
 	std::string family;
 	double friction;
 	int particles;
-	Stats phi, phiUnion;
+	Stats phi, phiUnion, flatOrder;
 	double settledFraction = 0.0;
 };
 
@@ -424,13 +442,13 @@ const char* const kRunsHeader = "family,friction,particles,seed,phi,phi_union,bo
 void WriteRuns(const std::string& path, const std::vector<RunResult>& results)
 {
 	std::ofstream runs = OpenOutput(path);
-	runs << kRunsHeader << "\n";
+	runs << kRunsHeader << ",flat_order\n";
 	for (const RunResult& r : results)
 	{
 		char line[400];
-		std::snprintf(line, sizeof(line), "%s,%.15g,%d,%llu,%.6f,%.6f,%.3f,%.3f,%.3f,%.3f,%.4f,%d,%.4f,%.3g,%.2f\n", r.family.c_str(),
+		std::snprintf(line, sizeof(line), "%s,%.15g,%d,%llu,%.6f,%.6f,%.3f,%.3f,%.3f,%.3f,%.4f,%d,%.4f,%.3g,%.2f,%.4f\n", r.family.c_str(),
 		              r.friction, r.particles, (unsigned long long)r.seed, r.phi, r.phiUnion, r.boxWidth, r.windowWidth,
-		              r.windowHeight, r.surface, r.meanDiameter, r.settled ? 1 : 0, r.settledAt, r.kineticRatio, r.wallSeconds);
+		              r.windowHeight, r.surface, r.meanDiameter, r.settled ? 1 : 0, r.settledAt, r.kineticRatio, r.wallSeconds, r.flatOrder);
 		runs << line;
 	}
 }
@@ -452,9 +470,9 @@ std::vector<RunResult> ReadRuns(const std::string& path)
 		char family[64] = {};
 		unsigned long long seed = 0;
 		int settled = 0;
-		if (std::sscanf(line.c_str(), "%63[^,],%lf,%d,%llu,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf,%lf,%lf", family, &r.friction, &r.particles,
+		if (std::sscanf(line.c_str(), "%63[^,],%lf,%d,%llu,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf,%lf,%lf,%lf", family, &r.friction, &r.particles,
 		                &seed, &r.phi, &r.phiUnion, &r.boxWidth, &r.windowWidth, &r.windowHeight, &r.surface, &r.meanDiameter,
-		                &settled, &r.settledAt, &r.kineticRatio, &r.wallSeconds) != 15 ||
+		                &settled, &r.settledAt, &r.kineticRatio, &r.wallSeconds, &r.flatOrder) < 15 ||
 		    FindFamily(family).name != family)
 		{
 			std::fprintf(stderr, "b2a_validate_packing: --replot: cannot read line %d of %s: '%s'\n", number, path.c_str(), line.c_str());
@@ -495,20 +513,22 @@ std::vector<Group> GroupRuns(const std::vector<RunResult>& results)
 		for (int n : counts)
 			for (double mu : frictions)
 			{
-				Group g{f, mu, n, {}, {}, 0.0};
-				std::vector<double> phi, phiUnion;
+				Group g{f, mu, n, {}, {}, {}, 0.0};
+				std::vector<double> phi, phiUnion, flatOrder;
 				int settled = 0;
 				for (const RunResult& r : results)
 					if (r.family == f && r.friction == mu && r.particles == n)
 					{
 						phi.push_back(r.phi);
 						phiUnion.push_back(r.phiUnion);
+						flatOrder.push_back(r.flatOrder);
 						settled += r.settled ? 1 : 0;
 					}
 				if (phi.empty())
 					continue;
 				g.phi = Summarise(phi);
 				g.phiUnion = Summarise(phiUnion);
+				g.flatOrder = Summarise(flatOrder);
 				g.settledFraction = double(settled) / double(phi.size());
 				groups.push_back(g);
 			}
@@ -519,18 +539,19 @@ std::vector<Group> GroupRuns(const std::vector<RunResult>& results)
 void WriteGroups(const std::string& csvPath, const std::vector<Group>& groups, Json& summary)
 {
 	std::ofstream csv = OpenOutput(csvPath);
-	csv << "family,friction,particles,seeds,phi_mean,phi_sd,phi_sem,phi_union_mean,at_rest_fraction\n";
+	csv << "family,friction,particles,seeds,phi_mean,phi_sd,phi_sem,phi_union_mean,at_rest_fraction,flat_order_mean\n";
 	auto number = [](double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); };
 	Json table = Json::array();
 	for (const Group& g : groups)
 	{
 		char line[300];
-		std::snprintf(line, sizeof(line), "%s,%g,%d,%d,%.5f,%.5f,%.5f,%.5f,%.2f\n", g.family.c_str(), g.friction, g.particles, g.phi.n,
-		              g.phi.mean, g.phi.sd, g.phi.sem, g.phiUnion.mean, g.settledFraction);
+		std::snprintf(line, sizeof(line), "%s,%g,%d,%d,%.5f,%.5f,%.5f,%.5f,%.2f,%.4f\n", g.family.c_str(), g.friction, g.particles,
+		              g.phi.n, g.phi.mean, g.phi.sd, g.phi.sem, g.phiUnion.mean, g.settledFraction, g.flatOrder.mean);
 		csv << line;
 		table.push_back({{"family", g.family}, {"friction", g.friction}, {"particles", g.particles}, {"seeds", g.phi.n},
 		                 {"phi_mean", number(g.phi.mean)}, {"phi_sd", number(g.phi.sd)}, {"phi_sem", number(g.phi.sem)},
-		                 {"phi_union_mean", number(g.phiUnion.mean)}, {"at_rest_fraction", g.settledFraction}});
+		                 {"phi_union_mean", number(g.phiUnion.mean)}, {"at_rest_fraction", g.settledFraction},
+		                 {"flat_order_mean", number(g.flatOrder.mean)}});
 	}
 	summary["groups"] = table;
 	Json refs = Json::array();
