@@ -370,11 +370,12 @@ std::string FrictionPlot(const std::vector<Group>& groups, const std::vector<std
 	return LinePlot(series, title, "friction coefficient μ (families side by side)", "area fraction φ in the window");
 }
 
-// φ against the count for each family and friction.
+// φ against the count for each family and friction, with ±1 standard deviation bars over the seeds.
 std::string CountPlot(const std::vector<Group>& groups, const std::vector<std::string>& families,
                       const std::vector<double>& frictions)
 {
 	std::vector<Series> series;
+	Series bars{"±1 s.d. over seeds", palette::black, {}, {}, false};
 	const Marker markers[] = {Marker::circle, Marker::square, Marker::triangle, Marker::diamond, Marker::triangleDown};
 	for (const std::string& name : families)
 		for (size_t k = 0; k < frictions.size(); ++k)
@@ -388,9 +389,16 @@ std::string CountPlot(const std::vector<Group>& groups, const std::vector<std::s
 				{
 					s.x.push_back(g.particles);
 					s.y.push_back(g.phi.mean);
+					if (std::isfinite(g.phi.sd))
+					{
+						bars.x.insert(bars.x.end(), {double(g.particles), double(g.particles), std::nan("")});
+						bars.y.insert(bars.y.end(), {g.phi.mean - g.phi.sd, g.phi.mean + g.phi.sd, std::nan("")});
+					}
 				}
 			series.push_back(s);
 		}
+	if (!bars.x.empty())
+		series.push_back(bars);
 	return LinePlot(series, "Packing fraction against the number of particles", "particles", "area fraction φ in the window",
 	                false, true);
 }
