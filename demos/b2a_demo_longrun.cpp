@@ -4,6 +4,7 @@
 #include "common/CommandLine.h"
 #include "common/DemoCommon.h"
 #include "common/GranularScene.h"
+#include "common/SiloFlow.h"
 
 #include <algorithm>
 #include <chrono>
@@ -71,29 +72,6 @@ bool Finite(const b2Body* b)
 	const b2Vec2 p = b->GetPosition(), v = b->GetLinearVelocity();
 	return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(b->GetAngle()) && std::isfinite(v.x) && std::isfinite(v.y) &&
 	       std::isfinite(b->GetAngularVelocity());
-}
-
-// True when no other particle's (fat) AABB overlaps a square of half side `r` around `c`.
-bool IsFree(b2World& world, const b2Body* self, b2Vec2 c, float r)
-{
-	struct Query : b2QueryCallback
-	{
-		const b2Body* self;
-		bool hit = false;
-		bool ReportFixture(b2Fixture* f) override
-		{
-			if (f->GetBody() == self || f->GetBody()->GetType() != b2_dynamicBody)
-				return true;
-			hit = true;
-			return false;
-		}
-	} query;
-	query.self = self;
-	b2AABB box;
-	box.lowerBound = c - b2Vec2(r, r);
-	box.upperBound = c + b2Vec2(r, r);
-	world.QueryAABB(&query, box);
-	return !query.hit;
 }
 
 double KineticEnergy(const b2Body* b)

@@ -82,9 +82,6 @@ std::vector<ParticleState> SettleBed(const GranularConfig& config, double minTim
 	return scene.SaveState();
 }
 
-namespace
-{
-// True when no other dynamic body's (fat) bounding box overlaps a square of half side `r` around `c`.
 bool IsFree(b2World& world, const b2Body* self, b2Vec2 c, float r)
 {
 	struct Query : b2QueryCallback
@@ -106,7 +103,6 @@ bool IsFree(b2World& world, const b2Body* self, b2Vec2 c, float r)
 	world.QueryAABB(&query, box);
 	return !query.hit;
 }
-} // namespace
 
 bool PlaceInFreeSpot(b2World& world, b2Body* body, double x0, double x1, double y0, double y1, int attempts, std::mt19937_64& rng,
                      long& retries)

@@ -39,6 +39,10 @@ int ParticlesForBed(const ParticleKind& kind, double width, double height, doubl
 std::vector<ParticleState> SettleBed(const GranularConfig& config, double minTime, double maxTime, double ratio, double& fraction,
                                      double& depth);
 
+/// True when no other dynamic body's (fat) bounding box overlaps a square of half side `r` around
+/// `c` (disabled bodies, which leave the broad phase, never count).
+bool IsFree(b2World& world, const b2Body* self, b2Vec2 c, float r);
+
 /// Put `body` at rest at a random place in the band [x0, x1] × [y0, y1] where no other dynamic
 /// body's bounding box comes within its bounding radius (plus 0.2), keeping its angle; tries
 /// `attempts` places (x, then y, drawn from `rng` for each). Returns false if none was free;
