@@ -3,6 +3,7 @@
 // pyramid of blocks, a ramp, and a bucket pile with ray casts through it.
 #include "common/CommandLine.h"
 #include "common/DemoCommon.h"
+#include "common/GameBucket.h"
 #include "common/Plot.h"
 #include "common/Svg.h"
 
@@ -53,8 +54,8 @@ bucket_awake.svg (bodies awake against time).
 
 )";
 
-const b2Vec2 kGravity(0.0f, -10.0f);
-const float kStep = 1.0f / 60.0f;
+const b2Vec2 kGravity = kGameGravity;
+const float kStep = kGameStep;
 
 // Box2D's debug drawing into an SVG canvas: b2a::DrawWorld draws the analytic particles' true
 // outlines through it, and Box2D's own shapes as Box2D draws them.
@@ -115,22 +116,6 @@ void DrawInto(SvgCanvas& canvas, b2World& world, const std::string& title)
 	SvgDraw draw(canvas);
 	DrawWorld(&world, &draw);
 	canvas.Label(10.0, 20.0, title);
-}
-
-bool AllAsleep(b2World& world)
-{
-	for (b2Body* b = world.GetBodyList(); b; b = b->GetNext())
-		if (b->GetType() == b2_dynamicBody && b->IsAwake())
-			return false;
-	return true;
-}
-
-int Awake(b2World& world)
-{
-	int n = 0;
-	for (b2Body* b = world.GetBodyList(); b; b = b->GetNext())
-		n += b->GetType() == b2_dynamicBody && b->IsAwake();
-	return n;
 }
 
 b2Body* GroundEdge(b2World& world, b2Vec2 a, b2Vec2 b, float friction)
@@ -332,22 +317,6 @@ Json RampPart(const std::string& out, Progress& progress)
 // ---------------------------------------------------------------------------------------------
 // Bucket
 
-// The families of the bucket: one shape each, shared by its particles.
-std::vector<ShapePtr> Families(const std::string& family)
-{
-	const ShapePtr ellipse = MakeEllipse(0.5, 0.3), block = MakeSuperellipse(0.5, 0.3, 4.0, 4.0), heart = MakeHeart(0.2),
-	               circle = MakeCircle(0.4);
-	if (family == "ellipse")
-		return {ellipse};
-	if (family == "superellipse")
-		return {block};
-	if (family == "heart")
-		return {heart};
-	if (family == "circle")
-		return {circle};
-	return {ellipse, block, heart, circle};
-}
-
 struct Bucket
 {
 	std::unique_ptr<b2World> world;
@@ -355,46 +324,19 @@ struct Bucket
 	double asleepAt = -1.0;
 };
 
-// A chain bucket 16 m wide and 40 m tall (its links face inwards), and particles on a lattice of
-// cells two bounding radii and 5 cm wide above its floor, the families in turn, at random angles.
+// The bucket of MakeGameBucket (16 m wide), run until every body sleeps or maxTime.
 Bucket RunBucket(const std::vector<ShapePtr>& families, int particles, bool polygons, std::uint64_t seed, double maxTime,
                  Progress& progress, double progressFrom, double progressTo)
 {
 	Bucket bucket;
-	bucket.world = std::make_unique<b2World>(kGravity);
-	b2BodyDef def;
-	b2Body* ground = bucket.world->CreateBody(&def);
-	const b2Vec2 v[4] = {b2Vec2(8.0f, 40.0f), b2Vec2(8.0f, 0.0f), b2Vec2(-8.0f, 0.0f), b2Vec2(-8.0f, 40.0f)};
-	b2ChainShape chain;
-	chain.CreateChain(v, 4, v[0], v[3]);
-	ground->CreateFixture(&chain, 0.0f)->SetFriction(0.6f);
-	double reach = 0.0;
-	for (const ShapePtr& s : families)
-		reach = std::max(reach, s->BoundingRadius());
-	const double cell = 2.0 * reach + 0.05;
-	const int perRow = int((16.0 - cell) / cell) + 1;
-	std::mt19937_64 rng(seed);
-	std::uniform_real_distribution<double> unit(0.0, 1.0);
-	for (int i = 0; i < particles; ++i)
-	{
-		const ShapePtr& shape = families[size_t(i) % families.size()];
-		const Vec2 at(-0.5 * (perRow - 1) * cell + (i % perRow) * cell + 0.02 * (unit(rng) - 0.5), reach + 0.05 + (i / perRow) * cell);
-		b2Body* body = DynamicBody(*bucket.world, at, 2.0 * kPi * unit(rng));
-		if (polygons)
-		{
-			const b2PolygonShape polygon = MakeInscribedPolygon(*shape, 8);
-			body->CreateFixture(&polygon, 1.0f)->SetFriction(0.6f);
-		}
-		else
-			CreateAnalyticFixture(body, shape, 1.0f, 0.6f);
-	}
+	bucket.world = MakeGameBucket(families, particles, polygons, seed);
 	for (int step = 1; step * kStep <= maxTime + 1e-9; ++step)
 	{
 		bucket.world->Step(kStep, 8, 3);
 		if (step % 6 == 0)
 		{
 			bucket.time.push_back(step * kStep);
-			bucket.awake.push_back(Awake(*bucket.world));
+			bucket.awake.push_back(AwakeBodies(*bucket.world));
 			progress.Report(progressFrom + (progressTo - progressFrom) * step * kStep / maxTime,
 			                std::string(polygons ? "8-gon" : "analytic") + " bucket: " + std::to_string(int(bucket.awake.back())) +
 			                    " bodies awake");
@@ -406,7 +348,7 @@ Bucket RunBucket(const std::vector<ShapePtr>& families, int particles, bool poly
 		}
 	}
 	bucket.time.push_back(bucket.asleepAt > 0.0 ? bucket.asleepAt : maxTime);
-	bucket.awake.push_back(Awake(*bucket.world));
+	bucket.awake.push_back(AwakeBodies(*bucket.world));
 	return bucket;
 }
 
@@ -488,7 +430,7 @@ Json BucketPart(const DemoOptions& opt, const BucketOptions& bucketOptions, Prog
 	const std::string& family = bucketOptions.family;
 	const int particles = bucketOptions.particles;
 	const double maxTime = bucketOptions.maxTime;
-	const std::vector<ShapePtr> families = Families(family);
+	const std::vector<ShapePtr> families = GameFamilies(family);
 	const Bucket a = RunBucket(families, particles, false, opt.seed, maxTime, progress, 0.25, 0.8);
 	const Bucket p = RunBucket(families, particles, true, opt.seed, maxTime, progress, 0.8, 0.95);
 	// The pictures reach 2 m above the higher pile's top.

@@ -2,7 +2,9 @@
 // each run with analytic particles and with Box2D 8-gons inscribed in the same shapes; step time
 // split by Box2D's own profile, at growing particle counts.
 #include "BenchCommon.h"
+#include "GameScenes.h"
 #include "common/CommandLine.h"
+#include "common/GameBucket.h"
 #include "common/GranularScene.h"
 
 #include "b2analytic/b2analytic.h"
@@ -27,7 +29,7 @@ using namespace b2a::demo;
 
 namespace
 {
-const char* kHelp = R"(b2a_bench_scenes: whole simulations, analytic particles against Box2D 8-gons.
+const std::string kHelp = std::string(R"(b2a_bench_scenes: whole simulations, analytic particles against Box2D 8-gons.
 
 Two scenes of the demos (GranularScene, millimetre units, g = 9810 mm/s^2, step 2e-4 s, 8
 velocity and 3 position iterations, sleeping off), each at every particle count:
@@ -60,7 +62,7 @@ none outside the container.
 Writes DIR/scenes.csv, DIR/scenes.md and DIR/summary.json, and DIR/<scene>_<N>_<variant>.svg
 pictures at the end of the window for the smallest count. Exits 1 if a particle was lost,
 left the container or became non-finite.
-)";
+)") + kGameScenesHelp;
 
 // The issue's target for the hopper of ellipses: step and collide time over the 8-gons'.
 constexpr double kTargetStepRatio = 1.5;
@@ -390,7 +392,22 @@ int main(int argc, char** argv)
 	        "Wall-clock time per step (preparation included) is what these\n"
 	        "save: wall_step_ms, and wall_speedup (analytic's over the variant's)",
 	        WholeNumber(2, 256));
+	bool game = false;
+	GameSceneOptions gameOptions;
+	cli.App().add_flag("--game", game, "run the game scenes instead (see below)");
+	cli.Add("--game-counts", gameOptions.counts, {300, 3000}, {300}, "N,N", "--game: particles (default 300,3000; quick 300)",
+	        WholeNumber(10, 100000));
+	cli.Add("--game-families", gameOptions.families, GameFamilyNames(), GameFamilyNames(), "F,F",
+	        "--game: ellipse, superellipse, heart, circle, mixed (default all)", OneOf(GameFamilyNames()));
+	cli.Add("--game-steps", gameOptions.steps, 600, 240, "N", "--game: steps of each run (default 600, quick 240)",
+	        WholeNumber(1, 100000));
+	cli.Add("--repeats", gameOptions.repeats, 3, 1, "N", "--game: runs of each variant (default 3, quick 1)", WholeNumber(1, 100));
 	const DemoOptions opt = cli.Parse(argc, argv);
+	if (game)
+	{
+		Progress gameProgress("b2a_bench_scenes");
+		return RunGameScenes(opt, gameOptions, gameProgress);
+	}
 	const MachineInfo machine = GetMachineInfo();
 	Progress progress("b2a_bench_scenes");
 	const std::vector<int> counts = Counts(givenCounts, opt.quick);
