@@ -452,3 +452,33 @@ TEST_CASE("heart: LevelLowerBounds, two discs at a time, is LevelLowerBound bit 
 	for (double b : none)
 		CHECK(b == -std::numeric_limits<double>::infinity());
 }
+
+TEST_CASE("heart: Support's tip cone and tangency Newton agree with the sampled search of Shape::Support")
+{
+	// The reference is the generic search (best sample, then a bracketed root of the slope to
+	// 1e-10 rad): on the smooth outline the values agree to rounding (the support value is flat
+	// at its maximum), the points to the reference's angle tolerance times the size. At the tip
+	// the reference closes on the corner only to its angle tolerance, below the exact tip.
+	Random rng(47);
+	for (double alpha : {0.02, 0.2, 1.0, 1.7, 40.0})
+	{
+		CAPTURE(alpha);
+		const auto heart = MakeHeart(alpha);
+		const double size = heart->BoundingRadius();
+		int tips = 0;
+		for (int i = 0; i < 2000; ++i)
+		{
+			const Vec2 d = Rotate(Rot(i < 8 ? i * 0.25 * kPi : rng.Angle()), Vec2(1.0, 0.0));
+			CAPTURE(d.x);
+			CAPTURE(d.y);
+			const Vec2 p = heart->Support(d), ref = heart->Shape::Support(d);
+			const bool tip = p.x == 0.0;
+			CHECK(Dot(p, d) >= Dot(ref, d) - 1e-15 * size);
+			CHECK(Dot(p, d) - Dot(ref, d) <= (tip ? 1e-10 : 1e-14) * size);
+			CHECK(Length(p - ref) <= 1e-8 * size);
+			CHECK(std::fabs(heart->Level(p) - alpha) <= 1e-14 * alpha);
+			tips += p.x == 0.0 ? 1 : 0;
+		}
+		CHECK(tips > 200); // the tip's normal cone is a sizeable share of the directions
+	}
+}

@@ -4,6 +4,7 @@
 #include "b2analytic/Shape.h"
 
 #include <cmath>
+#include <vector>
 
 namespace b2a
 {
@@ -27,6 +28,11 @@ public:
 	void Levels(const Vec2* x, int count, double* out) const override;
 	LevelDerivatives Derivatives(Vec2 x) const override;
 	double RadiusAt(Vec2 u, double level) const override;
+	/// The support point of the convex hull: the tip where d lies inside the tip's normal cone
+	/// (bounded by the hull's tangents from the tip to the lobes), else Newton's method on the
+	/// tangency (level α and gradient parallel to d) from the best surface sample; where that does
+	/// not settle on a convex stretch between the sample's neighbours, Shape::Support.
+	Vec2 Support(Vec2 d) const override;
 	/// Every bound of LevelBounds, which the grid method and the line searches inside and toward
 	/// the heart use.
 	const LevelBounds* Bounds() const override { return this; }
@@ -49,7 +55,20 @@ public:
 
 private:
 	double LengthHint() const override;
+	// Newton's method for the tangency along d from the sample `start`, kept between the polar
+	// angles lo and hi; false where it does not settle on a local maximum of d·x.
+	bool TangencyNewton(Vec2 d, Vec2 start, double lo, double hi, Vec2& x) const;
 	double m_alpha;
+	// The sample farthest along d: the vertex of the samples' convex hull whose normal cone
+	// holds d (a binary search over the hull's edge normals), as a scan of the samples finds it.
+	int BestSample(Vec2 d) const;
+	// sin and cos of the angle from the vertical of the hull's tangent from the tip to a lobe.
+	double m_tipSin = 1.0, m_tipCos = 0.0;
+	// The convex hull of the default surface samples, counter-clockwise: its vertices' sample
+	// indices, and the polar angle of each edge's outward normal (edge k from vertex k to k + 1),
+	// increasing from the first over one turn.
+	std::vector<int> m_hull;
+	std::vector<double> m_hullNormal;
 };
 
 /// Heart of size α.

@@ -2,6 +2,7 @@
 #include "b2analytic/HeartShape.h"
 
 #include "numerics/Powers.h"
+#include "numerics/RootFinding.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,71 @@ HeartShape::HeartShape(double alpha) : Shape(BuiltinKinds::nonConvex, alpha, fal
 	AddCorner(0.5 * kPi);  // notch
 	AddCorner(-0.5 * kPi); // tip
 	Finalize(-1.0, nullptr);
+	// The hull's tangent from the tip (0, −√α) to the right lobe: the largest angle from the
+	// vertical of x − tip over the right half of the outline (x > 0), between the tip's cusp
+	// (vertical tangent) and the notch (vertical again), refined about the best of 64 angles.
+	const double tipY = -std::sqrt(alpha);
+	auto negAngle = [&](double t) {
+		const Vec2 x = SurfacePoint(t, alpha);
+		return -std::atan2(x.x, x.y - tipY);
+	};
+	const int n = 64;
+	double best = 0.0, bestValue = std::numeric_limits<double>::infinity();
+	for (int i = 1; i < n; ++i)
+	{
+		const double t = -0.5 * kPi + kPi * i / n, v = negAngle(t);
+		if (v < bestValue) { bestValue = v; best = t; }
+	}
+	const ScalarResult r = MinimizeBrent(negAngle, best - kPi / n, best + kPi / n, 1e-15, 1e-15, 200);
+	const double phi = -std::min(r.fx, bestValue);
+	m_tipSin = std::sin(phi);
+	m_tipCos = std::cos(phi);
+	// The samples' convex hull (Andrew's monotone chain, collinear points dropped).
+	const SurfaceSamples& samples = SamplesRef();
+	std::vector<int> order(size_t(samples.Count()));
+	for (size_t i = 0; i < order.size(); ++i)
+		order[i] = int(i);
+	std::sort(order.begin(), order.end(), [&](int a, int b) {
+		const Vec2 p = samples.point[size_t(a)], q = samples.point[size_t(b)];
+		return p.x < q.x || (p.x == q.x && p.y < q.y);
+	});
+	std::vector<int> hull(2 * order.size());
+	size_t k = 0;
+	auto turnsLeft = [&](int a, int b, int c) {
+		return Cross(samples.point[size_t(b)] - samples.point[size_t(a)], samples.point[size_t(c)] - samples.point[size_t(a)]) > 0.0;
+	};
+	for (size_t i = 0; i < order.size(); ++i)
+	{
+		while (k >= 2 && !turnsLeft(hull[k - 2], hull[k - 1], order[i]))
+			--k;
+		hull[k++] = order[i];
+	}
+	for (size_t i = order.size() - 1, lower = k + 1; i-- > 0;)
+	{
+		while (k >= lower && !turnsLeft(hull[k - 2], hull[k - 1], order[i]))
+			--k;
+		hull[k++] = order[i];
+	}
+	hull.resize(k - 1);
+	m_hull = hull;
+	for (size_t i = 0; i < m_hull.size(); ++i)
+	{
+		const Vec2 e = samples.point[size_t(m_hull[(i + 1) % m_hull.size()])] - samples.point[size_t(m_hull[i])];
+		double a = std::atan2(-e.x, e.y);
+		while (!m_hullNormal.empty() && a < m_hullNormal.back())
+			a += 2.0 * kPi;
+		m_hullNormal.push_back(a);
+	}
+}
+
+int HeartShape::BestSample(Vec2 d) const
+{
+	double a = std::atan2(d.y, d.x);
+	a += 2.0 * kPi * std::floor((m_hullNormal.front() - a) / (2.0 * kPi) + 1.0);
+	if (a >= m_hullNormal.front() + 2.0 * kPi)
+		a -= 2.0 * kPi;
+	const size_t j = size_t(std::upper_bound(m_hullNormal.begin(), m_hullNormal.end(), a) - m_hullNormal.begin());
+	return m_hull[j % m_hull.size()];
 }
 
 std::string HeartShape::Describe() const
@@ -312,6 +378,66 @@ double HeartShape::RadiusAt(Vec2 u, double level) const
 			break;
 	}
 	return s * s * s;
+}
+
+bool HeartShape::TangencyNewton(Vec2 d, Vec2 start, double lo, double hi, Vec2& x) const
+{
+	// Unknowns x = (x, y) on one side of the axis: F1 = α(x) − α, F2 = ∇α × d, with the Jacobian
+	// rows ∇α and (H d⊥)ᵀ (d⊥ = (d_y, −d_x)). Quadratic from a sample beside the solution.
+	const double side = start.x > 0.0 ? 1.0 : -1.0, scale = std::sqrt(m_alpha);
+	x = start;
+	bool settled = false;
+	LevelDerivatives D;
+	for (int it = 0; it < 12 && !settled; ++it)
+	{
+		D = Derivatives(x);
+		const Vec2 g = D.gradient;
+		const Sym22& H = D.hessian;
+		const double f1 = D.value - m_alpha, f2 = g.x * d.y - g.y * d.x;
+		const double j21 = H.xx * d.y - H.xy * d.x, j22 = H.xy * d.y - H.yy * d.x;
+		const double det = g.x * j22 - g.y * j21;
+		if (!(std::fabs(det) > 0.0))
+			return false;
+		const Vec2 step((f1 * j22 - g.y * f2) / det, (g.x * f2 - j21 * f1) / det);
+		x = x - step;
+		if (!(x.x * side > 1e-6 * scale) || !IsFinite(x))
+			return false; // onto the axis, where the level has its kink: not this method's case
+		settled = LengthSquared(step) <= 1e-28 * m_alpha;
+	}
+	if (!settled)
+		return false;
+	D = Derivatives(x);
+	const Vec2 g = D.gradient, t(-g.y, g.x);
+	const Sym22& H = D.hessian;
+	// A maximum of d·x along the outline: the gradient along d, and the outline convex there
+	// (the level's Hessian positive along the tangent); and within the sample's bracket.
+	const double curvature = t.x * (H.xx * t.x + H.xy * t.y) + t.y * (H.xy * t.x + H.yy * t.y);
+	double angle = std::atan2(x.y, x.x);
+	const double mid = 0.5 * (lo + hi);
+	angle += 2.0 * kPi * std::round((mid - angle) / (2.0 * kPi));
+	return Dot(g, d) > 0.0 && curvature > 0.0 && angle >= lo && angle <= hi;
+}
+
+Vec2 HeartShape::Support(Vec2 d) const
+{
+	// The tip is the support where every x − tip, within m_tip's angle of the vertical, has
+	// d·(x − tip) ≤ 0; a margin of 1e-6 of |d| keeps the angle's last digits from deciding.
+	const double tipY = -std::sqrt(m_alpha);
+	if (std::fabs(d.x) * m_tipSin + d.y * m_tipCos <= -1e-6 * Length(d))
+		return Vec2(0.0, tipY);
+	const SurfaceSamples& samples = SamplesRef();
+	const int best = BestSample(d);
+	const Vec2 start = samples.point[size_t(best)];
+	const double bestValue = Dot(d, start);
+	if (std::fabs(start.x) > 1e-3 * std::sqrt(m_alpha))
+	{
+		double lo, hi;
+		samples.NeighbourAngles(best, lo, hi);
+		Vec2 x;
+		if (TangencyNewton(d, start, lo, hi, x) && Dot(d, x) >= bestValue)
+			return x;
+	}
+	return Shape::Support(d);
 }
 
 std::shared_ptr<HeartShape> MakeHeart(double alpha)
