@@ -84,13 +84,25 @@ ContactResult SeparatingAxisContact(const Shape& a, const Pose& pa, const Vec2* 
 	// (v − s_A(n))·t, v the face end that is lowest along n turned slightly that way (the
 	// support value h_A(n) has derivative s_A(n)·t when A is strictly convex). Both pointing
 	// down, the kink is a local maximum, and the search below would only find it again.
+	// The same holds for any shape whose support at n is one point (then h_A is differentiable
+	// there, Danskin's theorem): a heart's hull has a flat only between its lobes, and its tip is
+	// one point. Where A is not smooth and convex, the supports at n turned by ±1e-9 rad tell:
+	// on a flat of the hull they jump to its two ends; elsewhere they lie within the curvature
+	// radius times 2e-9 of each other.
 	bool kinkMaximum = false;
-	if (bestFace >= 0 && a.IsSmoothConvex())
+	if (bestFace >= 0)
 	{
 		const Vec2 t(-bestNormal.y, bestNormal.x);
 		const double s = Dot(bestSupport, t);
 		const double t0 = Dot(w[bestFace], t), t1 = Dot(w[(bestFace + 1) % count], t);
 		kinkMaximum = std::min(t0, t1) - s < 0.0 && std::max(t0, t1) - s > 0.0;
+		if (kinkMaximum && !a.IsSmoothConvex())
+		{
+			const double turn = 1e-9;
+			const Vec2 before = WorldSupport(a, pa, bestNormal - turn * t), after = WorldSupport(a, pa, bestNormal + turn * t);
+			evaluations += 2;
+			kinkMaximum = Length(after - before) <= 1e-6 * a.BoundingRadius();
+		}
 	}
 	if (!kinkMaximum)
 	{
