@@ -406,11 +406,11 @@ bool HeartShape::TangencyNewton(Vec2 d, Vec2 start, double lo, double hi, Vec2& 
 	}
 	if (!settled)
 		return false;
-	D = Derivatives(x);
+	// A maximum of d·x along the outline: the gradient along d, and the outline convex there
+	// (the level's Hessian positive along the tangent); and within the sample's bracket. (The
+	// derivatives at the last iterate, a rounding-sized step from x, decide these signs.)
 	const Vec2 g = D.gradient, t(-g.y, g.x);
 	const Sym22& H = D.hessian;
-	// A maximum of d·x along the outline: the gradient along d, and the outline convex there
-	// (the level's Hessian positive along the tangent); and within the sample's bracket.
 	const double curvature = t.x * (H.xx * t.x + H.xy * t.y) + t.y * (H.xy * t.x + H.yy * t.y);
 	double angle = std::atan2(x.y, x.x);
 	const double mid = 0.5 * (lo + hi);
