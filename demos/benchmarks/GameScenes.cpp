@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace b2a::bench
 {
@@ -106,6 +107,12 @@ int RunGameScenes(const DemoOptions& opt, const GameSceneOptions& options, Progr
 			for (size_t j = i; j < i + 2; ++j)
 			{
 				GameRun& r = runs[j];
+				if (!options.only.empty() && options.only != (r.polygons ? "polygon8" : "analytic"))
+				{
+					r.cpu = r.collide = r.solve = r.broadphase = {std::numeric_limits<double>::quiet_NaN()};
+					r.bodies = r.count;
+					continue;
+				}
 				progress.Report(done / total, "game " + r.family + " " + std::to_string(r.count) + (r.polygons ? " 8-gons" : " analytic") +
 				                                  ", repeat " + std::to_string(k + 1));
 				RunOnce(r, options.steps, opt.seed);

@@ -16,6 +16,7 @@ struct GameSceneOptions
 	std::vector<std::string> families; ///< GameFamilyNames() to run
 	int steps = 0;                     ///< steps of each run (60 a second), all timed
 	int repeats = 0;                   ///< runs of each variant, alternated; medians reported
+	std::string only;                  ///< "analytic" or "polygon8": run that variant alone (for profiles)
 };
 
 /// The help text of the game scenes, for b2a_bench_scenes --help.

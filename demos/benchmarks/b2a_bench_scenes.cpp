@@ -402,6 +402,8 @@ int main(int argc, char** argv)
 	cli.Add("--game-steps", gameOptions.steps, 600, 240, "N", "--game: steps of each run (default 600, quick 240)",
 	        WholeNumber(1, 100000));
 	cli.Add("--repeats", gameOptions.repeats, 3, 1, "N", "--game: runs of each variant (default 3, quick 1)", WholeNumber(1, 100));
+	cli.Add("--game-only", gameOptions.only, "V", "--game: run only the variant V, analytic or polygon8 (for profiles)",
+	        OneOf({"analytic", "polygon8"}));
 	const DemoOptions opt = cli.Parse(argc, argv);
 	if (game)
 	{
