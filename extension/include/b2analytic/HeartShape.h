@@ -55,9 +55,10 @@ public:
 
 private:
 	double LengthHint() const override;
-	// Newton's method for the tangency along d from the sample `start`, kept between the polar
-	// angles lo and hi; false where it does not settle on a local maximum of d·x.
-	bool TangencyNewton(Vec2 d, Vec2 start, double lo, double hi, Vec2& x) const;
+	// Newton's method for the tangency along d from the sample `start`, kept between the rays
+	// through its neighbouring samples `before` and `after`; false where it does not settle on a
+	// local maximum of d·x.
+	bool TangencyNewton(Vec2 d, Vec2 start, Vec2 before, Vec2 after, Vec2& x) const;
 	double m_alpha;
 	// The sample farthest along d: the vertex of the samples' convex hull whose normal cone
 	// holds d (a binary search over the hull's edge normals), as a scan of the samples finds it.
@@ -65,8 +66,8 @@ private:
 	// sin and cos of the angle from the vertical of the hull's tangent from the tip to a lobe.
 	double m_tipSin = 1.0, m_tipCos = 0.0;
 	// The convex hull of the default surface samples, counter-clockwise: its vertices' sample
-	// indices, and the polar angle of each edge's outward normal (edge k from vertex k to k + 1),
-	// increasing from the first over one turn.
+	// indices, and the pseudo-angle (a monotone stand-in for the polar angle, 4 a turn) of each
+	// edge's outward normal (edge k from vertex k to k + 1), increasing from the first over one turn.
 	std::vector<int> m_hull;
 	std::vector<double> m_hullNormal;
 };

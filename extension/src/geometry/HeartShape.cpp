@@ -10,6 +10,17 @@
 
 namespace b2a
 {
+namespace
+{
+// A monotone stand-in for the polar angle of v, in [0, 4) over one turn from the +x axis
+// (the "diamond angle"): binary searches over directions need no arctangent.
+inline double PseudoAngle(Vec2 v)
+{
+	if (v.y >= 0.0)
+		return v.x >= 0.0 ? v.y / (v.x + v.y) : 1.0 - v.x / (v.y - v.x);
+	return v.x < 0.0 ? 2.0 - v.y / (-v.x - v.y) : 3.0 + v.x / (v.x - v.y);
+}
+} // namespace
 
 HeartShape::HeartShape(double alpha) : Shape(BuiltinKinds::nonConvex, alpha, false, false, 1.0), m_alpha(alpha)
 {
@@ -69,19 +80,18 @@ HeartShape::HeartShape(double alpha) : Shape(BuiltinKinds::nonConvex, alpha, fal
 	for (size_t i = 0; i < m_hull.size(); ++i)
 	{
 		const Vec2 e = samples.point[size_t(m_hull[(i + 1) % m_hull.size()])] - samples.point[size_t(m_hull[i])];
-		double a = std::atan2(-e.x, e.y);
+		double a = PseudoAngle(Vec2(e.y, -e.x));
 		while (!m_hullNormal.empty() && a < m_hullNormal.back())
-			a += 2.0 * kPi;
+			a += 4.0;
 		m_hullNormal.push_back(a);
 	}
 }
 
 int HeartShape::BestSample(Vec2 d) const
 {
-	double a = std::atan2(d.y, d.x);
-	a += 2.0 * kPi * std::floor((m_hullNormal.front() - a) / (2.0 * kPi) + 1.0);
-	if (a >= m_hullNormal.front() + 2.0 * kPi)
-		a -= 2.0 * kPi;
+	double a = PseudoAngle(d);
+	if (a < m_hullNormal.front())
+		a += 4.0;
 	const size_t j = size_t(std::upper_bound(m_hullNormal.begin(), m_hullNormal.end(), a) - m_hullNormal.begin());
 	return m_hull[j % m_hull.size()];
 }
@@ -380,7 +390,7 @@ double HeartShape::RadiusAt(Vec2 u, double level) const
 	return s * s * s;
 }
 
-bool HeartShape::TangencyNewton(Vec2 d, Vec2 start, double lo, double hi, Vec2& x) const
+bool HeartShape::TangencyNewton(Vec2 d, Vec2 start, Vec2 before, Vec2 after, Vec2& x) const
 {
 	// Unknowns x = (x, y) on one side of the axis: F1 = α(x) − α, F2 = ∇α × d, with the Jacobian
 	// rows ∇α and (H d⊥)ᵀ (d⊥ = (d_y, −d_x)). Quadratic from a sample beside the solution.
@@ -412,10 +422,7 @@ bool HeartShape::TangencyNewton(Vec2 d, Vec2 start, double lo, double hi, Vec2& 
 	const Vec2 g = D.gradient, t(-g.y, g.x);
 	const Sym22& H = D.hessian;
 	const double curvature = t.x * (H.xx * t.x + H.xy * t.y) + t.y * (H.xy * t.x + H.yy * t.y);
-	double angle = std::atan2(x.y, x.x);
-	const double mid = 0.5 * (lo + hi);
-	angle += 2.0 * kPi * std::round((mid - angle) / (2.0 * kPi));
-	return Dot(g, d) > 0.0 && curvature > 0.0 && angle >= lo && angle <= hi;
+	return Dot(g, d) > 0.0 && curvature > 0.0 && Cross(before, x) >= 0.0 && Cross(x, after) >= 0.0;
 }
 
 Vec2 HeartShape::Support(Vec2 d) const
@@ -431,10 +438,10 @@ Vec2 HeartShape::Support(Vec2 d) const
 	const double bestValue = Dot(d, start);
 	if (std::fabs(start.x) > 1e-3 * std::sqrt(m_alpha))
 	{
-		double lo, hi;
-		samples.NeighbourAngles(best, lo, hi);
+		const int n = samples.Count();
+		const Vec2 before = samples.point[size_t((best + n - 1) % n)], after = samples.point[size_t((best + 1) % n)];
 		Vec2 x;
-		if (TangencyNewton(d, start, lo, hi, x) && Dot(d, x) >= bestValue)
+		if (TangencyNewton(d, start, before, after, x) && Dot(d, x) >= bestValue)
 			return x;
 	}
 	return Shape::Support(d);
