@@ -7,6 +7,7 @@
 
 #include <box2d/box2d.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -36,6 +37,7 @@ struct GameRun
 	int count = 0;
 	bool polygons = false;
 	std::vector<double> cpu, collide, solve, broadphase; // ms per step, mean over the run's steps, one per repeat
+	std::vector<double> awakeMean;                       // bodies awake after a step, mean over the run's steps
 	double touching = 0.0, pairs = 0.0;                  // at the end of the last repeat, per particle
 	int awake = 0, nonFinite = 0, escaped = 0, bodies = 0;
 };
@@ -46,7 +48,7 @@ double Width(int count) { return 16.0 * std::sqrt(count / 300.0); }
 void RunOnce(GameRun& run, int steps, std::uint64_t seed)
 {
 	std::unique_ptr<b2World> world = MakeGameBucket(GameFamilies(run.family), run.count, run.polygons, seed, Width(run.count));
-	double cpu = 0.0, collide = 0.0, solve = 0.0, broadphase = 0.0;
+	double cpu = 0.0, collide = 0.0, solve = 0.0, broadphase = 0.0, awake = 0.0;
 	for (int s = 0; s < steps; ++s)
 	{
 		const double before = ThreadCpuNanoseconds();
@@ -56,11 +58,13 @@ void RunOnce(GameRun& run, int steps, std::uint64_t seed)
 		collide += p.collide;
 		solve += p.solve;
 		broadphase += p.broadphase;
+		awake += AwakeBodies(*world);
 	}
 	run.cpu.push_back(cpu / steps);
 	run.collide.push_back(collide / steps);
 	run.solve.push_back(solve / steps);
 	run.broadphase.push_back(broadphase / steps);
+	run.awakeMean.push_back(awake / steps);
 	int touching = 0;
 	for (b2Contact* c = world->GetContactList(); c; c = c->GetNext())
 		touching += c->IsTouching() ? 1 : 0;
@@ -109,7 +113,7 @@ int RunGameScenes(const DemoOptions& opt, const GameSceneOptions& options, Progr
 				GameRun& r = runs[j];
 				if (!options.only.empty() && options.only != (r.polygons ? "polygon8" : "analytic"))
 				{
-					r.cpu = r.collide = r.solve = r.broadphase = {std::numeric_limits<double>::quiet_NaN()};
+					r.cpu = r.collide = r.solve = r.broadphase = r.awakeMean = {std::numeric_limits<double>::quiet_NaN()};
 					r.bodies = r.count;
 					continue;
 				}
@@ -123,10 +127,12 @@ int RunGameScenes(const DemoOptions& opt, const GameSceneOptions& options, Progr
 
 	Table csv, md;
 	csv.columns = {"family", "count", "variant", "steps", "repeats", "step_cpu_ms", "collide_ms", "solve_ms", "broadphase_ms",
-	               "cpu_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8", "touching_per_particle", "pairs_per_particle",
-	               "awake_at_end", "nonfinite", "escaped"};
+	               "cpu_vs_polygon8", "collide_vs_polygon8", "solve_vs_polygon8", "awake_mean", "cpu_us_per_awake_body",
+	               "cpu_per_awake_vs_polygon8", "touching_per_particle", "pairs_per_particle", "awake_at_end", "nonfinite",
+	               "escaped"};
 	md.columns = {"family", "N", "variant", "CPU ms/step", "collide ms", "solve ms (broadphase)", "CPU × 8-gon", "collide × 8-gon",
-	              "solve × 8-gon", "touching/particle", "pairs/particle", "awake at end"};
+	              "solve × 8-gon", "awake (mean)", "CPU µs/awake body", "per awake body × 8-gon", "touching/particle",
+	              "pairs/particle", "awake at end"};
 	Json list = Json::array();
 	bool intact = true;
 	std::string line;
@@ -137,23 +143,30 @@ int RunGameScenes(const DemoOptions& opt, const GameSceneOptions& options, Progr
 		const double cpu = Median(r.cpu), collide = Median(r.collide), solve = Median(r.solve), broad = Median(r.broadphase);
 		const double cpuRatio = cpu / Median(base.cpu), collideRatio = collide / Median(base.collide),
 		             solveRatio = solve / Median(base.solve);
+		// CPU per awake body-step: sleeping bodies cost Box2D nothing, so a scene whose bodies
+		// sleep sooner is cheaper for that alone; this ratio is the cost of the bodies that move.
+		const double awake = Median(r.awakeMean), perAwake = 1e3 * cpu / std::max(awake, 1.0),
+		             perAwakeRatio = perAwake / (1e3 * Median(base.cpu) / std::max(Median(base.awakeMean), 1.0));
 		intact = intact && r.nonFinite == 0 && r.escaped == 0 && r.bodies == r.count;
 		const std::string variant = r.polygons ? "polygon8" : "analytic";
 		csv.rows.push_back({r.family, std::to_string(r.count), variant, std::to_string(options.steps), std::to_string(options.repeats),
 		                    FormatNumber(cpu), FormatNumber(collide), FormatNumber(solve), FormatNumber(broad), FormatNumber(cpuRatio),
-		                    FormatNumber(collideRatio), FormatNumber(solveRatio), FormatNumber(r.touching), FormatNumber(r.pairs),
+		                    FormatNumber(collideRatio), FormatNumber(solveRatio), FormatNumber(awake), FormatNumber(perAwake),
+		                    FormatNumber(perAwakeRatio), FormatNumber(r.touching), FormatNumber(r.pairs),
 		                    std::to_string(r.awake), std::to_string(r.nonFinite), std::to_string(r.escaped)});
 		md.rows.push_back({r.family, std::to_string(r.count), r.polygons ? "8-gon" : "analytic", FormatNumber(cpu, 3),
 		                   FormatNumber(collide, 3), FormatNumber(solve, 3) + " (" + FormatNumber(broad, 2) + ")",
 		                   FormatNumber(cpuRatio, 3), FormatNumber(collideRatio, 3), FormatNumber(solveRatio, 3),
-		                   FormatNumber(r.touching, 3), FormatNumber(r.pairs, 3), std::to_string(r.awake)});
+		                   FormatNumber(awake, 3), FormatNumber(perAwake, 3), FormatNumber(perAwakeRatio, 3), FormatNumber(r.touching, 3), FormatNumber(r.pairs, 3), std::to_string(r.awake)});
 		list.push_back({{"family", r.family}, {"count", r.count}, {"variant", variant}, {"step_cpu_ms", cpu}, {"collide_ms", collide},
 		                {"solve_ms", solve}, {"broadphase_ms", broad}, {"cpu_vs_polygon8", cpuRatio},
-		                {"collide_vs_polygon8", collideRatio}, {"solve_vs_polygon8", solveRatio},
+		                {"collide_vs_polygon8", collideRatio}, {"solve_vs_polygon8", solveRatio}, {"awake_mean", awake},
+		                {"cpu_us_per_awake_body", perAwake}, {"cpu_per_awake_vs_polygon8", perAwakeRatio},
 		                {"touching_per_particle", r.touching}, {"pairs_per_particle", r.pairs}, {"awake_at_end", r.awake},
 		                {"nonfinite", r.nonFinite}, {"escaped", r.escaped}, {"step_cpu_ms_repeats", r.cpu}});
 		if (!r.polygons)
-			line += "; " + r.family + " " + std::to_string(r.count) + " " + FormatNumber(cpuRatio, 3) + "x";
+			line += "; " + r.family + " " + std::to_string(r.count) + " " + FormatNumber(cpuRatio, 3) + "x (per awake body " +
+			        FormatNumber(perAwakeRatio, 3) + "x)";
 	}
 	WriteText(opt.out + "/game.csv", csv.Csv());
 	const MachineInfo machine = GetMachineInfo();
@@ -161,7 +174,9 @@ int RunGameScenes(const DemoOptions& opt, const GameSceneOptions& options, Progr
 	                   " hardware threads.  \nBuild: " + machine.buildFlags + ".  \n" + std::to_string(options.steps) +
 	                   " steps of 1/60 s from the drop, every one timed (CPU time of the stepping thread); medians over " +
 	                   std::to_string(options.repeats) +
-	                   " repeats of the mean per step. collide and solve: Box2D's profile (wall-clock; solve includes the "
+	                   " repeats of the mean per step. Bodies asleep cost Box2D nothing: `awake (mean)` is the mean number "
+	                   "of bodies awake after a step, and `per awake body` the CPU time per step over it, the cost of the "
+	                   "bodies that move whichever scene sleeps sooner. collide and solve: Box2D's profile (wall-clock; solve includes the "
 	                   "broadphase). `× 8-gon`: over the same scene of Box2D 8-gons inscribed in the same shapes (hearts: the "
 	                   "convex hull of 8 points of the outline).\n\n" +
 	                   md.Markdown();
