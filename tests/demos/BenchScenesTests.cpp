@@ -213,7 +213,50 @@ TEST_CASE("b2a_bench_scenes rejects bad options with exit status 2")
 	CHECK(ExitStatus("--steps 0 --out demo_out/bench_scenes_bad") == 2);
 	CHECK(ExitStatus("--threads 1 --out demo_out/bench_scenes_bad") == 2);   // 1 thread is the analytic variant
 	CHECK(ExitStatus("--threads 2.5 --out demo_out/bench_scenes_bad") == 2);
+	CHECK(ExitStatus("--game --game-families ellipse,bogus --out demo_out/bench_scenes_bad") == 2);
+	CHECK(ExitStatus("--game --game-only both --out demo_out/bench_scenes_bad") == 2);
+	CHECK(ExitStatus("--game --repeats 0 --out demo_out/bench_scenes_bad") == 2);
 	CHECK(ExitStatus("--help") == 0);
+}
+
+TEST_CASE("b2a_bench_scenes --game: each family beside its 8-gons, every particle kept, ratios in the same run")
+{
+	const std::string out = "demo_out/bench_scenes_game";
+	std::filesystem::remove_all(out);
+	std::filesystem::create_directories("demo_out");
+	const std::string cmd = std::string("\"") + B2A_BENCH_SCENES +
+	                        "\" --game --quick --game-families heart,mixed --game-steps 40 --repeats 2 --out " + out + " > " + out +
+	                        ".stdout 2> " + out + ".stderr";
+	INFO("command: " << cmd);
+	REQUIRE(std::system(cmd.c_str()) == 0);
+	std::vector<std::string> header;
+	const std::vector<Row> rows = ReadCsv(out + "/game.csv", header);
+	REQUIRE(rows.size() == 4);
+	const char* families[] = {"heart", "heart", "mixed", "mixed"};
+	for (size_t i = 0; i < rows.size(); ++i)
+	{
+		CAPTURE(i);
+		const Row& r = rows[i];
+		CHECK(r.at("family") == families[i]);
+		CHECK(r.at("variant") == (i % 2 == 0 ? "analytic" : "polygon8"));
+		CHECK(Number(r, "count") == 300);
+		CHECK(Number(r, "steps") == 40);
+		CHECK(Number(r, "repeats") == 2);
+		CHECK(Number(r, "step_cpu_ms") > 0.0);
+		CHECK(std::isfinite(Number(r, "step_cpu_ms")));
+		// The ratios are this run's: each row's time over its 8-gon row's.
+		const Row& base = rows[i - i % 2 + 1];
+		CHECK(Number(r, "cpu_vs_polygon8") == doctest::Approx(Number(r, "step_cpu_ms") / Number(base, "step_cpu_ms")).epsilon(1e-3));
+		// In 40 steps (0.67 s) the lattice is still falling: every body awake, none asleep.
+		CHECK(Number(r, "awake_mean") == doctest::Approx(300.0));
+		CHECK(Number(r, "nonfinite") == 0);
+		CHECK(Number(r, "escaped") == 0);
+	}
+	std::ifstream summary(out + "/game.json");
+	const nlohmann::json j = nlohmann::json::parse(summary);
+	CHECK(j["particles_intact"].get<bool>());
+	CHECK(j["runs"].size() == 4);
+	CHECK(j["runs"][0]["step_cpu_ms_repeats"].size() == 2);
 }
 
 #endif
