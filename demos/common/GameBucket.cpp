@@ -36,8 +36,10 @@ std::unique_ptr<b2World> MakeGameBucket(const std::vector<ShapePtr>& families, i
 	auto world = std::make_unique<b2World>(kGameGravity);
 	b2BodyDef def;
 	b2Body* ground = world->CreateBody(&def);
-	const float half = float(0.5 * width);
-	const b2Vec2 v[4] = {b2Vec2(half, 40.0f), b2Vec2(half, 0.0f), b2Vec2(-half, 0.0f), b2Vec2(-half, 40.0f)};
+	// Walls 40 m tall at 16 m wide, and as much taller as the bucket is wider: 3000 hearts' hull
+	// 8-gons heap above 40 m in a bucket 50 m wide.
+	const float half = float(0.5 * width), height = float(40.0 * std::max(1.0, width / 16.0));
+	const b2Vec2 v[4] = {b2Vec2(half, height), b2Vec2(half, 0.0f), b2Vec2(-half, 0.0f), b2Vec2(-half, height)};
 	b2ChainShape chain;
 	chain.CreateChain(v, 4, v[0], v[3]);
 	ground->CreateFixture(&chain, 0.0f)->SetFriction(0.6f);

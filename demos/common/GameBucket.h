@@ -29,8 +29,8 @@ std::vector<ShapePtr> GameFamilies(const std::string& family);
 /// The family names GameFamilies takes, "mixed" last.
 const std::vector<std::string>& GameFamilyNames();
 
-/// A world with a chain bucket `width` m wide and 40 m tall (its links face inwards, friction
-/// 0.6) and `particles` bodies on a lattice of cells two bounding radii and 5 cm wide above its
+/// A world with a chain bucket `width` m wide and 40 m tall, taller as width / 16 m where wider
+/// (its links face inwards, friction 0.6) and `particles` bodies on a lattice of cells two bounding radii and 5 cm wide above its
 /// floor, the families in turn, at random angles (from `seed`): analytic fixtures, or with
 /// `polygons` the Box2D 8-gons inscribed in the same shapes (b2a::MakeInscribedPolygon: for a
 /// heart, the convex hull of 8 points of its outline); density 1, friction 0.6.
