@@ -53,6 +53,11 @@ struct ManifoldCache
 	double offFaceB = std::numeric_limits<double>::quiet_NaN(); ///< the same for B
 	bool validA = false;               ///< faceA holds a face
 	bool validB = false;               ///< faceB holds a face
+	/// Points of a non-convex pair's last manifold (lobes on a face, or two parts of the overlap),
+	/// whose ids the next manifold's points take by nearness: partCount of them.
+	signed char partCount = 0;
+	signed char partId[2] = {0, 1}; ///< their ids
+	float partB[2][2] = {{0.0f, 0.0f}, {0.0f, 0.0f}}; ///< their places on B (B's body frame)
 };
 
 /// Build the manifold of a contact, as Box2D builds its polygons': two particles that touch face
