@@ -341,7 +341,11 @@ int LobesOnFace(const Face& fa, const ManifoldSide& b, double tol, double radii,
 	for (int i = 0; i < count; ++i)
 	{
 		const double d = depth[size_t(i)];
-		if (!(d <= depth[size_t((i + count - 1) % count)] && d < depth[size_t((i + 1) % count)]) || d > tol + 2.0 * samples.maxDeviation)
+		// (A lobe reported touches within the radii: a filter without them dropped, against a
+		// chain link's 1 cm skin, whichever lobe was not the lowest, and the point hopped between
+		// the lobes step after step.)
+		if (!(d <= depth[size_t((i + count - 1) % count)] && d < depth[size_t((i + 1) % count)]) ||
+		    d > radii + tol + 2.0 * samples.maxDeviation)
 			continue;
 		double a0, a1;
 		samples.NeighbourAngles(i, a0, a1);
@@ -540,33 +544,54 @@ ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, c
 // Ids for a non-convex pair's points (lobes on a face, parts of the overlap), which need not come
 // in the same order or number from one step to the next: each takes the id of the nearest of the
 // last manifold's points on B (B's body frame), so that Box2D carries each point's impulse with
-// its own lobe or part; a point where none was takes the id left free. (In a pile of hearts the
-// second lobe or part comes and goes, and by order alone the one that stays swapped ids with
-// it: the warm start then pushed where the other had been.)
+// its own lobe or part; a point where none was (farther than a tenth of B from every one) takes
+// an id none of them had, so that Box2D starts it without the impulse of a point elsewhere.
+// (In a pile of hearts the second lobe or part comes and goes, and by order alone the one that
+// stays swapped ids with it: the warm start then pushed where the other had been.)
 void MatchPartIds(ContactManifold& m, const ManifoldSide& b, ManifoldCache& cache)
 {
 	Vec2 here[2];
 	for (int k = 0; k < m.count; ++k)
 		here[k] = ToBody(b.pose, m.points[k].pointB);
 	const int before = cache.partCount;
+	const double far = 0.1 * b.shape->BoundingRadius();
 	auto old = [&](int j) { return Vec2(cache.partB[j][0], cache.partB[j][1]); };
-	if (m.count == 1)
-		m.points[0].id = before == 0 ? 0
-		                 : before == 1 || Distance(here[0], old(0)) <= Distance(here[0], old(1)) ? cache.partId[0]
-		                                                                                         : cache.partId[1];
-	else if (m.count == 2 && before > 0)
+	// match[k]: the old point whose id new point k takes, or −1. Two new points keep the pairing
+	// with the smaller total distance.
+	int match[2] = {-1, -1};
+	if (m.count == 1 && before > 0)
+		match[0] = before == 1 || Distance(here[0], old(0)) <= Distance(here[0], old(1)) ? 0 : 1;
+	else if (m.count == 2 && before == 1)
+		match[Distance(here[0], old(0)) <= Distance(here[1], old(0)) ? 0 : 1] = 0;
+	else if (m.count == 2 && before == 2)
 	{
-		// Keep the pairing with the smaller total distance (one old point: the nearer new one).
-		const double straight = Distance(here[0], old(0)) + (before == 2 ? Distance(here[1], old(1)) : 0.0);
-		const double crossed = Distance(here[1], old(0)) + (before == 2 ? Distance(here[0], old(1)) : 0.0);
-		const int first = straight <= crossed ? 0 : 1; // the new point that takes old point 0's id
-		m.points[first].id = cache.partId[0];
-		m.points[1 - first].id = before == 2 ? cache.partId[1] : 1 - cache.partId[0];
+		const double straight = Distance(here[0], old(0)) + Distance(here[1], old(1));
+		const double crossed = Distance(here[1], old(0)) + Distance(here[0], old(1));
+		match[0] = straight <= crossed ? 0 : 1;
+		match[1] = 1 - match[0];
 	}
-	else if (m.count == 2)
+	bool used[4] = {false, false, false, false};
+	for (int k = 0; k < m.count; ++k)
 	{
-		m.points[0].id = 0;
-		m.points[1].id = 1;
+		if (match[k] >= 0 && !(Distance(here[k], old(match[k])) <= far))
+			match[k] = -1;
+		if (match[k] >= 0)
+			used[cache.partId[match[k]]] = true;
+	}
+	for (int j = 0; j < before; ++j)
+		used[cache.partId[j]] = true; // (an id that stopped is not given to a point elsewhere)
+	for (int k = 0; k < m.count; ++k)
+	{
+		if (match[k] >= 0)
+		{
+			m.points[k].id = cache.partId[match[k]];
+			continue;
+		}
+		int fresh = 0;
+		while (used[fresh])
+			++fresh;
+		m.points[k].id = fresh;
+		used[fresh] = true;
 	}
 	cache.partCount = static_cast<signed char>(m.count);
 	for (int k = 0; k < m.count; ++k)
