@@ -481,39 +481,85 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 // and which one that is changes with every small motion. A one-point manifold then jumps between
 // them step after step, the normal turning by up to 80 degrees and the warm start's impulse
 // applied where the other part was: a pile of hearts churns at 0.5 m/s and never sleeps. Where a
-// second part overlaps (B's surface inside A, or A's inside B, farther than a tenth of the
-// smaller particle from the contact's part), the manifold holds both: one normal (Box2D's
-// manifold has one), the parts' normals weighted by their depths, each point's separation the
-// one along its own normal divided by the cosine between the two (what moving along the common
-// normal must undo). Where either part's normal lies more than 60 degrees from the common one,
-// or either part is deeper than a tenth of the smaller particle (overlaps made, not met, where
-// the parts' normals say little), the contact's point alone.
-ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, const ManifoldSide& b, double radii,
-                                const ContactManifold& single)
+// second part overlaps (B's surface inside A, farther than a tenth of the smaller particle from
+// the contact's part; A's surface inside B where B's shows none), the manifold holds two parts:
+// one normal (Box2D's manifold has one), the parts' normals weighted by their depths up to
+// `full`, each point's separation the one along its own normal divided by the cosine between
+// the two (what moving along the common normal must undo). The two are the contact's part and
+// the deepest other, or the last manifold's two while both still overlap at least half as deep
+// as the deepest part: of three parts of similar depths (a heart wedged between two lobes), the
+// pair otherwise changed every other step, the normal turning by 0.5 rad. Where either part's
+// normal lies more than 60 degrees from the common one, or any part is deeper than a tenth of
+// the smaller particle (overlaps made, not met, where the parts' normals say little), the
+// contact's point alone.
+ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, const ManifoldSide& b, double radii, double full,
+                                const ContactManifold& single, const ManifoldCache& cache)
 {
 	constexpr int kMax = 4;
-	OverlapPart parts[2 * kMax];
-	int count = OverlapParts(*a.shape, a.pose, *b.shape, b.pose, true, parts, kMax);
-	count += OverlapParts(*b.shape, b.pose, *a.shape, a.pose, false, parts + count, kMax);
+	OverlapPart parts[kMax + 1]; // the contact's own part first
 	const double apart = 0.1 * std::min(a.shape->BoundingRadius(), b.shape->BoundingRadius());
 	if (single.points[0].separation < -apart)
 		return single; // a deep overlap (particles created inside each other): the contact alone
-	const OverlapPart* second = nullptr;
-	for (int k = 0; k < count; ++k)
-	{
-		const OverlapPart& p = parts[k];
-		if (Distance(p.pointB, c.pointB) <= apart || Distance(p.pointA, c.pointA) <= apart || p.separation - radii < -apart)
-			continue; // the contact's own part, or one as deep as only a deep overlap has
-		if (!second || p.separation < second->separation)
-			second = &parts[k];
-	}
-	if (!second)
+	parts[0] = {c.pointA, c.pointB, c.normal, single.points[0].separation + radii};
+	auto others = [&](int count) {
+		int kept = 1;
+		for (int k = 1; k <= count; ++k)
+		{
+			const OverlapPart& p = parts[k];
+			if (Distance(p.pointB, c.pointB) <= apart || Distance(p.pointA, c.pointA) <= apart || p.separation - radii < -apart)
+				continue; // the contact's own part, or one as deep as only a deep overlap has
+			parts[kept++] = p;
+		}
+		return kept;
+	};
+	// Each part of the overlap shows both surfaces inside the other, at deepest points a part's
+	// width apart: taken from either side as it came deeper, the second point hopped between
+	// them (0.2 m, the normal turning 0.5 rad a step, in a settled pile of hearts). B's surface
+	// inside A names the parts; A's inside B only where that shows no second part.
+	int count = others(OverlapParts(*a.shape, a.pose, *b.shape, b.pose, true, parts + 1, kMax));
+	if (count == 1)
+		count = others(OverlapParts(*b.shape, b.pose, *a.shape, a.pose, false, parts + 1, kMax));
+	if (count == 1)
 		return single;
+	int pick[2] = {0, 1}, deepest = 0;
+	for (int k = 1; k < count; ++k)
+	{
+		if (parts[k].separation < parts[pick[1]].separation)
+			pick[1] = k;
+		if (parts[k].separation < parts[deepest].separation)
+			deepest = k;
+	}
+	if (cache.partCount == 2)
+	{
+		// The parts nearest the last manifold's two points (B's frame), if both are still there.
+		int kept[2] = {-1, -1};
+		for (int j = 0; j < 2; ++j)
+		{
+			const Vec2 old(cache.partB[j][0], cache.partB[j][1]);
+			double nearest = apart;
+			for (int k = 0; k < count; ++k)
+				if (Distance(ToBody(b.pose, parts[k].pointB), old) <= nearest)
+				{
+					nearest = Distance(ToBody(b.pose, parts[k].pointB), old);
+					kept[j] = k;
+				}
+		}
+		auto deepEnough = [&](int k) { return k >= 0 && parts[k].separation - radii <= 0.5 * (parts[deepest].separation - radii); };
+		if (kept[0] != kept[1] && deepEnough(kept[0]) && deepEnough(kept[1]))
+		{
+			pick[0] = kept[0];
+			pick[1] = kept[1];
+		}
+	}
+	const OverlapPart& p1 = parts[pick[0]];
+	const OverlapPart& p2 = parts[pick[1]];
 	// The common normal leans towards each part by its depth, so that a part that starts to touch
 	// (or stops) turns it from the other's normal continuously: weighted equally, a grazing part
-	// coming and going turned a resting contact's normal by 0.3 rad a step.
-	const Vec2 n1 = c.normal, n2 = second->normal;
-	const double w1 = std::max(-single.points[0].separation, 0.0), w2 = std::max(-(second->separation - radii), 0.0);
+	// coming and going turned a resting contact's normal by 0.3 rad a step. Both deeper than
+	// `full` weigh the same: weighted by depths alone, two resting parts whose depths the solver
+	// trades step by step turned it by 0.1-0.5 rad a step.
+	const Vec2 n1 = p1.normal, n2 = p2.normal;
+	const double w1 = std::clamp(-(p1.separation - radii), 0.0, full), w2 = std::clamp(-(p2.separation - radii), 0.0, full);
 	const Vec2 sum = w1 + w2 > 0.0 ? w1 * n1 + w2 * n2 : n1 + n2;
 	if (!(LengthSquared(sum) > 0.0))
 		return single;
@@ -522,9 +568,9 @@ ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, c
 		return single;
 	ContactManifold m;
 	m.normal = n;
-	m.pointA = c.pointA;
-	const Vec2 points[2] = {c.pointB, second->pointB};
-	const double separations[2] = {single.points[0].separation, second->separation - radii};
+	m.pointA = p1.pointA;
+	const Vec2 points[2] = {p1.pointB, p2.pointB};
+	const double separations[2] = {p1.separation - radii, p2.separation - radii};
 	const Vec2 normals[2] = {n1, n2};
 	const Vec2 t = Perp(n);
 	const int first = Dot(points[0], t) <= Dot(points[1], t) ? 0 : 1;
@@ -623,7 +669,7 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 	{
 		if (!twoParts)
 			return m;
-		ContactManifold parts = TwoPartManifold(c, a, b, radii, m);
+		ContactManifold parts = TwoPartManifold(c, a, b, radii, 2.0 * tol, m, *cache);
 		MatchPartIds(parts, b, *cache);
 		return parts;
 	}
