@@ -26,7 +26,9 @@ struct ManifoldPoint
 {
 	Vec2 pointB;             ///< point on B's surface (world)
 	double separation = 0.0; ///< (pointB − pointA)·normal − radii, ≤ 0 for every reported point
-	int id = 0;              ///< 0 for the single point or the lower end of a patch, 1 for its upper end
+	/// 0 for the single point or the lower end of a patch, 1 for its upper end; a non-convex
+	/// pair's lobes and parts of the overlap keep theirs while they last (0 to 3, ManifoldCache)
+	int id = 0;
 };
 
 /// A contact in the form Box2D's solver takes: one normal, one point on A (its tangent plane)
