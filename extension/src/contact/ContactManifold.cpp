@@ -395,9 +395,9 @@ struct OverlapPart
 	double separation = 0.0;
 };
 
-// The parts of the overlap that the surface of `inner` shows inside `outer` (world): each run of
-// inner's cached surface samples inside outer is one part, its deepest sample (lowest level of
-// outer) refined between its neighbours (Brent's method on the polar angle, to 1e-10 rad). The
+// The parts of the overlap that the surface of `inner` shows inside `outer` (world): each local
+// minimum of outer's level along a run of inner's cached surface samples inside outer is one
+// part, refined between its neighbours (Brent's method on the polar angle, to 1e-10 rad). The
 // normal is outer's gradient there (the level's minimum along inner's curve is where the two
 // normals agree) and the depth the distance along it to outer's surface (Newton on the level
 // along the line, from the first-order depth, at most eight steps). `outerIsA` says which side
@@ -421,17 +421,17 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 			start = i;
 	if (start < 0)
 		return 0;
+	// Every local minimum of the level along a run is a part: a long run (a lobe lying along the
+	// other's side) has one at either end, and the contact, warm-started, at either; with the
+	// run's deepest sample alone, the part at the contact's end was its own, and the manifold
+	// had two points one step and one the next.
 	int found = 0;
 	for (int k = 1; k <= n; ++k)
 	{
-		const int first = (start + k) % n;
-		if (!inside(first))
+		const int deepest = (start + k) % n;
+		const double here = level[size_t(deepest)];
+		if (!inside(deepest) || !(here <= level[size_t((deepest + n - 1) % n)] && here < level[size_t((deepest + 1) % n)]))
 			continue;
-		int deepest = first, length = 0;
-		for (int i = first; inside(i); i = (i + 1) % n, ++length)
-			if (level[size_t(i)] < level[size_t(deepest)])
-				deepest = i;
-		k += length - 1;
 		double lo, hi;
 		samples.NeighbourAngles(deepest, lo, hi);
 		auto levelAt = [&](double theta) { return outer.Level(ToWorld(rel, inner.SurfacePoint(theta))); };
