@@ -1,6 +1,7 @@
 // b2analytic demo: analytic particles in a game's units (metres, g = 10 m/s^2, 60 Hz, 8 velocity
 // and 3 position iterations, sleeping on) beside the same scenes of Box2D's own shapes: a
 // pyramid of blocks, a ramp, and a bucket pile with ray casts through it.
+#include "common/BucketScene.h"
 #include "common/CommandLine.h"
 #include "common/DemoCommon.h"
 #include "common/Plot.h"
@@ -17,7 +18,6 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -333,22 +333,6 @@ Json RampPart(const std::string& out, Progress& progress)
 // ---------------------------------------------------------------------------------------------
 // Bucket
 
-// The families of the bucket: one shape each, shared by its particles.
-std::vector<ShapePtr> Families(const std::string& family)
-{
-	const ShapePtr ellipse = MakeEllipse(0.5, 0.3), block = MakeSuperellipse(0.5, 0.3, 4.0, 4.0), heart = MakeHeart(0.2),
-	               circle = MakeCircle(0.4);
-	if (family == "ellipse")
-		return {ellipse};
-	if (family == "superellipse")
-		return {block};
-	if (family == "heart")
-		return {heart};
-	if (family == "circle")
-		return {circle};
-	return {ellipse, block, heart, circle};
-}
-
 struct Bucket
 {
 	std::unique_ptr<b2World> world;
@@ -356,39 +340,13 @@ struct Bucket
 	double asleepAt = -1.0;
 };
 
-// A chain bucket 16 m wide and 40 m tall (its links face inwards), and particles on a lattice of
-// cells two bounding radii and 5 cm wide above its floor, the families in turn, at random angles.
+// The bucket 16 m wide (common/BucketScene.h), run until every body sleeps or maxTime.
 Bucket RunBucket(const std::vector<ShapePtr>& families, int particles, bool polygons, std::uint64_t seed, double maxTime,
                  Progress& progress, double progressFrom, double progressTo)
 {
 	Bucket bucket;
 	bucket.world = std::make_unique<b2World>(kGravity);
-	b2BodyDef def;
-	b2Body* ground = bucket.world->CreateBody(&def);
-	const b2Vec2 v[4] = {b2Vec2(8.0f, 40.0f), b2Vec2(8.0f, 0.0f), b2Vec2(-8.0f, 0.0f), b2Vec2(-8.0f, 40.0f)};
-	b2ChainShape chain;
-	chain.CreateChain(v, 4, v[0], v[3]);
-	ground->CreateFixture(&chain, 0.0f)->SetFriction(0.6f);
-	double reach = 0.0;
-	for (const ShapePtr& s : families)
-		reach = std::max(reach, s->BoundingRadius());
-	const double cell = 2.0 * reach + 0.05;
-	const int perRow = int((16.0 - cell) / cell) + 1;
-	std::mt19937_64 rng(seed);
-	std::uniform_real_distribution<double> unit(0.0, 1.0);
-	for (int i = 0; i < particles; ++i)
-	{
-		const ShapePtr& shape = families[size_t(i) % families.size()];
-		const Vec2 at(-0.5 * (perRow - 1) * cell + (i % perRow) * cell + 0.02 * (unit(rng) - 0.5), reach + 0.05 + (i / perRow) * cell);
-		b2Body* body = DynamicBody(*bucket.world, at, 2.0 * kPi * unit(rng));
-		if (polygons)
-		{
-			const b2PolygonShape polygon = MakeInscribedPolygon(*shape, 8);
-			body->CreateFixture(&polygon, 1.0f)->SetFriction(0.6f);
-		}
-		else
-			CreateAnalyticFixture(body, shape, 1.0f, 0.6f);
-	}
+	FillBucket(*bucket.world, families, particles, 8.0f, polygons, seed);
 	for (int step = 1; step * kStep <= maxTime + 1e-9; ++step)
 	{
 		bucket.world->Step(kStep, 8, 3);
@@ -489,7 +447,7 @@ Json BucketPart(const DemoOptions& opt, const BucketOptions& bucketOptions, Prog
 	const std::string& family = bucketOptions.family;
 	const int particles = bucketOptions.particles;
 	const double maxTime = bucketOptions.maxTime;
-	const std::vector<ShapePtr> families = Families(family);
+	const std::vector<ShapePtr> families = BucketFamilies(family);
 	// Every family alone and mixed, each beside its 8-gons (--quick: the chosen family alone),
 	// progress shared out evenly among them.
 	const std::vector<std::string> names = opt.quick ? std::vector<std::string>{family}
@@ -530,7 +488,7 @@ Json BucketPart(const DemoOptions& opt, const BucketOptions& bucketOptions, Prog
 		double analytic = a.asleepAt, octagons = p.asleepAt;
 		if (name != family)
 		{
-			const std::vector<ShapePtr> shapes = Families(name);
+			const std::vector<ShapePtr> shapes = BucketFamilies(name);
 			analytic = RunBucket(shapes, particles, false, opt.seed, maxTime, progress, share(done), share(done + 0.5)).asleepAt;
 			octagons = RunBucket(shapes, particles, true, opt.seed, maxTime, progress, share(done + 0.5), share(done + 1.0)).asleepAt;
 			done += 1.0;

@@ -1,78 +1,22 @@
-// b2analytic tests: a pile poured into a chain bucket in Box2D's testbed settings (metres,
-// g = 10 m/s², 60 Hz, 8 velocity and 3 position iterations, sleeping on), of analytic particles
-// or of the Box2D 8-gons a user would give the same shapes, and when it falls asleep.
+// b2analytic tests: the bucket pile of b2a_demo_game (common/BucketScene.h) in Box2D's testbed
+// settings (metres, g = 10 m/s², 60 Hz, 8 velocity and 3 position iterations, sleeping on), of
+// analytic particles or of their Box2D 8-gons, and when it falls asleep.
 #pragma once
 
-#include "b2analytic/AnalyticFixture.h"
-#include "b2analytic/Box2DConversions.h"
-#include "b2analytic/b2analytic.h"
-
-#include <box2d/box2d.h>
-
-#include <algorithm>
-#include <cstdint>
-#include <random>
-#include <string>
-#include <vector>
+#include "common/BucketScene.h"
 
 namespace b2a::test
 {
 
-/// The bucket's families (b2a_demo_game's): ellipse 0.5 x 0.3 m, superellipse n = 4 of the same
-/// semi-axes, heart α = 0.2, circle r = 0.4 m, or all four in turn ("mixed").
-inline std::vector<ShapePtr> BucketFamilies(const std::string& family)
-{
-	const ShapePtr ellipse = MakeEllipse(0.5, 0.3), block = MakeSuperellipse(0.5, 0.3, 4.0, 4.0), heart = MakeHeart(0.2),
-	               circle = MakeCircle(0.4);
-	if (family == "ellipse")
-		return {ellipse};
-	if (family == "superellipse")
-		return {block};
-	if (family == "heart")
-		return {heart};
-	if (family == "circle")
-		return {circle};
-	return {ellipse, block, heart, circle};
-}
+using demo::BucketFamilies;
 
-/// A bucket pile: `particles` of the families in turn, on a lattice of cells two bounding radii
-/// and 5 cm wide above the floor of a chain bucket 2·halfWidth wide and 40 m tall (friction 0.6,
-/// density 1, random angles from `seed`), as analytic particles or their inscribed 8-gons
-/// (MakeInscribedPolygon). Returns when every body slept (s), or −1 if not within maxTime.
+/// When every body of a bucket pile (demo::FillBucket: `particles` of the families, a bucket
+/// 2·halfWidth wide, analytic or 8-gons, `seed`) slept (s), or −1 if not within maxTime.
 inline double BucketAsleepAt(const std::vector<ShapePtr>& families, int particles, float halfWidth, bool polygons,
                              std::uint64_t seed, double maxTime)
 {
 	b2World world(b2Vec2(0.0f, -10.0f));
-	b2BodyDef groundDef;
-	b2Body* ground = world.CreateBody(&groundDef);
-	const b2Vec2 v[4] = {b2Vec2(halfWidth, 40.0f), b2Vec2(halfWidth, 0.0f), b2Vec2(-halfWidth, 0.0f), b2Vec2(-halfWidth, 40.0f)};
-	b2ChainShape chain;
-	chain.CreateChain(v, 4, v[0], v[3]);
-	ground->CreateFixture(&chain, 0.0f)->SetFriction(0.6f);
-	double reach = 0.0;
-	for (const ShapePtr& s : families)
-		reach = std::max(reach, s->BoundingRadius());
-	const double cell = 2.0 * reach + 0.05;
-	const int perRow = int((2.0 * halfWidth - cell) / cell) + 1;
-	std::mt19937_64 rng(seed);
-	std::uniform_real_distribution<double> unit(0.0, 1.0);
-	for (int i = 0; i < particles; ++i)
-	{
-		const Shape& shape = *families[size_t(i) % families.size()];
-		b2BodyDef def;
-		def.type = b2_dynamicBody;
-		def.position.Set(float(-0.5 * (perRow - 1) * cell + (i % perRow) * cell + 0.02 * (unit(rng) - 0.5)),
-		                 float(reach + 0.05 + (i / perRow) * cell));
-		def.angle = float(2.0 * kPi * unit(rng));
-		b2Body* body = world.CreateBody(&def);
-		if (polygons)
-		{
-			const b2PolygonShape polygon = MakeInscribedPolygon(shape, 8);
-			body->CreateFixture(&polygon, 1.0f)->SetFriction(0.6f);
-		}
-		else
-			CreateAnalyticFixture(body, families[size_t(i) % families.size()], 1.0f, 0.6f);
-	}
+	demo::FillBucket(world, families, particles, halfWidth, polygons, seed);
 	for (int step = 1; step <= int(maxTime * 60.0 + 0.5); ++step)
 	{
 		world.Step(1.0f / 60.0f, 8, 3);

@@ -217,6 +217,24 @@ TEST_CASE("BuildContactManifold: curved contacts keep one point; a needle lying 
 	}
 }
 
+namespace
+{
+// `shape` at `pose` against a floor segment from (−5, 0) to (5, 0) as A (Box2D's edge, whose skin
+// is `radii`), the contact (ComputePolygonContact, flipped to the floor's side) in `contact`.
+ContactManifold OnFloorSegment(const Shape& shape, const Pose& pose, double radii = 0.0, ContactResult* contact = nullptr)
+{
+	const Vec2 floor[2] = {Vec2(-5.0, 0.0), Vec2(5.0, 0.0)};
+	const ContactResult c = FlipContact(ComputePolygonContact(shape, pose, floor, 2, Pose()));
+	REQUIRE(c.Ok());
+	if (contact)
+		*contact = c;
+	ManifoldSide sa;
+	sa.vertices = floor;
+	sa.count = 2;
+	return BuildContactManifold(c, sa, ManifoldSide{&shape, pose}, kTol, 0.0, radii);
+}
+} // namespace
+
 TEST_CASE("BuildContactManifold: a heart upside down on a floor stands on both lobes")
 {
 	// The heart's lobes, upside down, are its body frame's highest points either side of the
@@ -245,13 +263,7 @@ TEST_CASE("BuildContactManifold: a heart upside down on a floor stands on both l
 	const LD top = 0.5L * (a + b), xTop = radius(top) * std::cos(top), yTop = radius(top) * std::sin(top);
 	const ShapePtr heart = MakeHeart(alpha);
 	const Pose pose(Vec2(0.3, double(yTop) - 3e-3), kPi); // both lobes 3 mm below the floor's line
-	const Vec2 floor[2] = {Vec2(-5.0, 0.0), Vec2(5.0, 0.0)};
-	const ContactResult c = ComputePolygonContact(*heart, pose, floor, 2, Pose());
-	REQUIRE(c.Ok());
-	ManifoldSide sa;
-	sa.vertices = floor;
-	sa.count = 2;
-	const ContactManifold m = BuildContactManifold(FlipContact(c), sa, ManifoldSide{heart.get(), pose}, kTol, 0.0);
+	const ContactManifold m = OnFloorSegment(*heart, pose);
 	REQUIRE(m.count == 2);
 	CHECK(m.normal.y == doctest::Approx(1.0).epsilon(1e-12));
 	// (The lobes' ends in order along the floor's tangent, −x: the right one first.)
@@ -266,9 +278,8 @@ TEST_CASE("BuildContactManifold: a heart upside down on a floor stands on both l
 	}
 	// Lifted so that one lobe alone touches (tilted), the manifold is that lobe's point.
 	const Pose tilted(Vec2(0.3, double(yTop) - 3e-3), kPi + 0.02);
-	const ContactResult d = ComputePolygonContact(*heart, tilted, floor, 2, Pose());
-	REQUIRE(d.Ok());
-	const ContactManifold one = BuildContactManifold(FlipContact(d), sa, ManifoldSide{heart.get(), tilted}, kTol, 0.0);
+	ContactResult d;
+	const ContactManifold one = OnFloorSegment(*heart, tilted, 0.0, &d);
 	REQUIRE(one.count == 1);
 	CHECK(one.points[0].separation == doctest::Approx(d.separation).epsilon(1e-6));
 }
@@ -429,13 +440,7 @@ TEST_CASE("BuildContactManifold: a heart's lobes within a chain link's skin both
 	REQUIRE(double(std::min(low[0].y, low[1].y)) == doctest::Approx(0.003).epsilon(1e-6));
 	REQUIRE(double(std::max(low[0].y, low[1].y)) > 0.004);
 	REQUIRE(double(std::max(low[0].y, low[1].y)) < radii);
-	const Vec2 floor[2] = {Vec2(-5.0, 0.0), Vec2(5.0, 0.0)};
-	const ContactResult c = ComputePolygonContact(*heart, pose, floor, 2, Pose());
-	REQUIRE(c.Ok());
-	ManifoldSide sa;
-	sa.vertices = floor;
-	sa.count = 2;
-	const ContactManifold m = BuildContactManifold(FlipContact(c), sa, ManifoldSide{heart.get(), pose}, kTol, 0.0, radii);
+	const ContactManifold m = OnFloorSegment(*heart, pose, radii);
 	REQUIRE(m.count == 2);
 	for (int k = 0; k < 2; ++k)
 	{
