@@ -44,9 +44,10 @@ position iterations, sleeping on. Three scenes:
            middle of it.)
   bucket   particles dropped from a lattice into a chain-shaped bucket 16 m wide, beside the same
            pile of Box2D 8-gons inscribed in the same shapes (b2a::MakeInscribedPolygon): when
-           each pile falls asleep; then vertical rays cast down through the analytic pile
-           (b2World::RayCast), every hit checked to lie on the reported particle's surface
-           with no particle entered before it.
+           each pile falls asleep (-1: not within --duration), for every family alone and
+           mixed (--quick: the chosen family alone); then vertical rays cast down through the
+           chosen family's analytic pile (b2World::RayCast), every hit checked to lie on the
+           reported particle's surface with no particle entered before it.
 
 Writes to DIR: summary.json, pyramid.svg (both pyramids at rest), pyramid_top.svg (top height
 against time), ramp.svg, bucket.svg (the analytic pile with the rays), bucket_polygons.svg,
@@ -431,8 +432,12 @@ Json BucketPart(const DemoOptions& opt, const BucketOptions& bucketOptions, Prog
 	const int particles = bucketOptions.particles;
 	const double maxTime = bucketOptions.maxTime;
 	const std::vector<ShapePtr> families = GameFamilies(family);
-	const Bucket a = RunBucket(families, particles, false, opt.seed, maxTime, progress, 0.25, 0.8);
-	const Bucket p = RunBucket(families, particles, true, opt.seed, maxTime, progress, 0.8, 0.95);
+	// Every family alone and mixed, each beside its 8-gons (--quick: the chosen family alone),
+	// progress shared out evenly among them.
+	const std::vector<std::string> names = opt.quick ? std::vector<std::string>{family} : GameFamilyNames();
+	auto share = [&](double k) { return 0.25 + 0.75 * k / double(names.size()); };
+	const Bucket a = RunBucket(families, particles, false, opt.seed, maxTime, progress, share(0.0), share(0.5));
+	const Bucket p = RunBucket(families, particles, true, opt.seed, maxTime, progress, share(0.5), share(1.0));
 	// The pictures reach 2 m above the higher pile's top.
 	double top = 1.0;
 	for (const Bucket* b : {&a, &p})
@@ -458,6 +463,24 @@ Json BucketPart(const DemoOptions& opt, const BucketOptions& bucketOptions, Prog
 	j["asleep_ratio"] = a.asleepAt > 0.0 && p.asleepAt > 0.0 ? a.asleepAt / p.asleepAt : -1.0;
 	j["awake_at_end"] = {{"analytic", a.awake.back()}, {"polygons8", p.awake.back()}};
 	j["ray_casts"] = rays;
+	// The other families (the chosen family's runs are those above).
+	Json byFamily = Json::object();
+	double done = 1.0;
+	for (const std::string& name : names)
+	{
+		double analytic = a.asleepAt, octagons = p.asleepAt;
+		if (name != family)
+		{
+			const std::vector<ShapePtr> shapes = GameFamilies(name);
+			analytic = RunBucket(shapes, particles, false, opt.seed, maxTime, progress, share(done), share(done + 0.5)).asleepAt;
+			octagons = RunBucket(shapes, particles, true, opt.seed, maxTime, progress, share(done + 0.5), share(done + 1.0)).asleepAt;
+			done += 1.0;
+		}
+		byFamily[name] = {{"analytic_s", analytic},
+		                  {"polygons8_s", octagons},
+		                  {"ratio", analytic > 0.0 && octagons > 0.0 ? analytic / octagons : -1.0}};
+	}
+	j["asleep_by_family"] = byFamily;
 	return j;
 }
 } // namespace

@@ -15,6 +15,7 @@
 #include "b2analytic/ContactManifold.h"
 #include "TestSupport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -216,6 +217,24 @@ TEST_CASE("BuildContactManifold: curved contacts keep one point; a needle lying 
 	}
 }
 
+namespace
+{
+// `shape` at `pose` against a floor segment from (−5, 0) to (5, 0) as A (Box2D's edge, whose skin
+// is `radii`), the contact (ComputePolygonContact, flipped to the floor's side) in `contact`.
+ContactManifold OnFloorSegment(const Shape& shape, const Pose& pose, double radii = 0.0, ContactResult* contact = nullptr)
+{
+	const Vec2 floor[2] = {Vec2(-5.0, 0.0), Vec2(5.0, 0.0)};
+	const ContactResult c = FlipContact(ComputePolygonContact(shape, pose, floor, 2, Pose()));
+	REQUIRE(c.Ok());
+	if (contact)
+		*contact = c;
+	ManifoldSide sa;
+	sa.vertices = floor;
+	sa.count = 2;
+	return BuildContactManifold(c, sa, ManifoldSide{&shape, pose}, kTol, 0.0, radii);
+}
+} // namespace
+
 TEST_CASE("BuildContactManifold: a heart upside down on a floor stands on both lobes")
 {
 	// The heart's lobes, upside down, are its body frame's highest points either side of the
@@ -244,13 +263,7 @@ TEST_CASE("BuildContactManifold: a heart upside down on a floor stands on both l
 	const LD top = 0.5L * (a + b), xTop = radius(top) * std::cos(top), yTop = radius(top) * std::sin(top);
 	const ShapePtr heart = MakeHeart(alpha);
 	const Pose pose(Vec2(0.3, double(yTop) - 3e-3), kPi); // both lobes 3 mm below the floor's line
-	const Vec2 floor[2] = {Vec2(-5.0, 0.0), Vec2(5.0, 0.0)};
-	const ContactResult c = ComputePolygonContact(*heart, pose, floor, 2, Pose());
-	REQUIRE(c.Ok());
-	ManifoldSide sa;
-	sa.vertices = floor;
-	sa.count = 2;
-	const ContactManifold m = BuildContactManifold(FlipContact(c), sa, ManifoldSide{heart.get(), pose}, kTol, 0.0);
+	const ContactManifold m = OnFloorSegment(*heart, pose);
 	REQUIRE(m.count == 2);
 	CHECK(m.normal.y == doctest::Approx(1.0).epsilon(1e-12));
 	// (The lobes' ends in order along the floor's tangent, −x: the right one first.)
@@ -265,9 +278,176 @@ TEST_CASE("BuildContactManifold: a heart upside down on a floor stands on both l
 	}
 	// Lifted so that one lobe alone touches (tilted), the manifold is that lobe's point.
 	const Pose tilted(Vec2(0.3, double(yTop) - 3e-3), kPi + 0.02);
-	const ContactResult d = ComputePolygonContact(*heart, tilted, floor, 2, Pose());
-	REQUIRE(d.Ok());
-	const ContactManifold one = BuildContactManifold(FlipContact(d), sa, ManifoldSide{heart.get(), tilted}, kTol, 0.0);
+	ContactResult d;
+	const ContactManifold one = OnFloorSegment(*heart, tilted, 0.0, &d);
 	REQUIRE(one.count == 1);
 	CHECK(one.points[0].separation == doctest::Approx(d.separation).epsilon(1e-6));
+}
+
+namespace
+{
+// The heart (x² + y² − α)³ ≤ x² y³ independently of the library: its polynomial's sign, and its
+// surface along rays from its origin (it is star-shaped about it) by bisection in long double.
+bool InsideHeart(LD alpha, LD x, LD y)
+{
+	const LD w = x * x + y * y - alpha;
+	return w * w * w - x * x * y * y * y < 0.0L;
+}
+
+LD HeartRadius(LD alpha, LD theta)
+{
+	LD lo = 0.0L, hi = 3.0L * std::sqrt(alpha);
+	for (int it = 0; it < 80; ++it)
+	{
+		const LD r = 0.5L * (lo + hi);
+		(InsideHeart(alpha, r * std::cos(theta), r * std::sin(theta)) ? lo : hi) = r;
+	}
+	return lo;
+}
+
+struct WorldPoint
+{
+	LD x, y;
+};
+
+// The heart's surface at `pose`, at n polar angles evenly spaced (world).
+std::vector<WorldPoint> HeartOutline(LD alpha, const Pose& pose, int n)
+{
+	std::vector<WorldPoint> out;
+	const LD c = std::cos(LD(pose.q.Angle())), s = std::sin(LD(pose.q.Angle()));
+	for (int i = 0; i < n; ++i)
+	{
+		const LD theta = 2.0L * LD(kPi) * i / n, r = HeartRadius(alpha, theta);
+		const LD x = r * std::cos(theta), y = r * std::sin(theta);
+		out.push_back({pose.p.x + c * x - s * y, pose.p.y + s * x + c * y});
+	}
+	return out;
+}
+
+// One part of the overlap of B's outline with A (A at the origin, unrotated), on one side of
+// A's axis: the x range of B's outline inside A there, and the depth, the largest distance from
+// one of those points to A's outline (brute force over both outlines).
+struct PartReference
+{
+	int points = 0;
+	LD xMin = 1e9L, xMax = -1e9L, depth = 0.0L;
+};
+
+PartReference OverlapOnSide(LD alpha, const std::vector<WorldPoint>& outlineA, const std::vector<WorldPoint>& outlineB, int side)
+{
+	PartReference r;
+	for (const WorldPoint& q : outlineB)
+	{
+		if ((q.x > 0.0L ? 1 : -1) != side || !InsideHeart(alpha, q.x, q.y))
+			continue;
+		++r.points;
+		r.xMin = std::min(r.xMin, q.x);
+		r.xMax = std::max(r.xMax, q.x);
+		LD nearest = 1e9L;
+		for (const WorldPoint& p : outlineA)
+			nearest = std::min(nearest, std::hypot(p.x - q.x, p.y - q.y));
+		r.depth = std::max(r.depth, nearest);
+	}
+	return r;
+}
+} // namespace
+
+TEST_CASE("BuildContactManifold: two hearts lobe on lobe touch at both parts of their overlap, ids following the parts")
+{
+	// Heart B upside down on heart A, lobe on lobe, 2.5 mm deep: the overlap has two parts, one
+	// either side of A's axis, and the contact (the deeper part) is one of them. The manifold
+	// holds both, each point in its part (B's outline inside A over the part's x range, from the
+	// brute force, widened by 1 mm) with the part's depth as its separation (within 3 %: the
+	// depth along the common normal differs from the distance by the cosine, 1 − 1e-5 here).
+	// Tilting B the other way makes the other part the deeper, and the contact's; each point's
+	// id stays with its part; a part that comes apart drops its point, and the other keeps its id.
+	const LD alpha = 0.2L;
+	const ShapePtr heart = MakeHeart(double(alpha));
+	const Pose pa(Vec2(0.0, 0.0), 0.0);
+	const double top = heart->Support(Vec2(0.0, 1.0)).y; // (checked below against the outline)
+	const std::vector<WorldPoint> outlineA = HeartOutline(alpha, pa, 20000);
+	LD highest = -1.0L;
+	for (const WorldPoint& p : outlineA)
+		highest = std::max(highest, p.y);
+	REQUIRE(std::fabs(double(highest) - top) < 1e-6);
+	ManifoldCache cache;
+	int idOfSide[2] = {-1, -1}; // the ids of the left (x < 0) and right parts
+	struct Step
+	{
+		double dx, tilt;
+		bool bothTouch;
+	};
+	const Step steps[] = {{0.002, 0.002, true}, {0.0025, -0.002, true}, {0.003, -0.002, true}, {0.003, -0.03, false}, {0.002, 0.002, true}};
+	for (const Step& s : steps)
+	{
+		CAPTURE(s.dx);
+		CAPTURE(s.tilt);
+		const Pose pb(Vec2(s.dx, 2.0 * top - 0.0025), kPi + s.tilt);
+		const ContactResult c = ComputeContact(*heart, pa, *heart, pb);
+		REQUIRE(c.Ok());
+		const ContactManifold m = BuildContactManifold(c, ManifoldSide{heart.get(), pa}, ManifoldSide{heart.get(), pb}, kTol, 0.0, 0.0, &cache);
+		const std::vector<WorldPoint> outlineB = HeartOutline(alpha, pb, 20000);
+		const PartReference parts[2] = {OverlapOnSide(alpha, outlineA, outlineB, -1), OverlapOnSide(alpha, outlineA, outlineB, 1)};
+		REQUIRE(parts[1].points > 0);
+		CHECK((parts[0].points > 0) == s.bothTouch);
+		REQUIRE(m.count == (s.bothTouch ? 2 : 1));
+		CHECK(m.normal.y > std::cos(0.02));
+		bool seen[2] = {false, false};
+		for (int k = 0; k < m.count; ++k)
+		{
+			CAPTURE(k);
+			const int side = m.points[k].pointB.x > 0.0 ? 1 : 0;
+			CHECK(!seen[side]);
+			seen[side] = true;
+			const PartReference& r = parts[side];
+			CHECK(m.points[k].pointB.x >= double(r.xMin) - 1e-3);
+			CHECK(m.points[k].pointB.x <= double(r.xMax) + 1e-3);
+			CHECK(m.points[k].separation == doctest::Approx(-double(r.depth)).epsilon(0.03));
+			if (idOfSide[side] >= 0)
+				CHECK(m.points[k].id == idOfSide[side]);
+			idOfSide[side] = m.points[k].id;
+		}
+		if (!s.bothTouch)
+			idOfSide[0] = -1; // (a part that comes back takes an id of its own)
+		if (m.count == 2)
+			CHECK(m.points[0].id != m.points[1].id);
+	}
+}
+
+TEST_CASE("BuildContactManifold: a heart's lobes within a chain link's skin both touch, the higher one too")
+{
+	// Box2D's edges carry a 1 cm skin (the radii): an upside-down heart tilted on a floor, its
+	// lobes' lowest points 3 and about 4.6 mm above the floor's line, touches on both lobes,
+	// each at its lowest point (the brute-force outline's lowest point either side of the heart's
+	// axis) with its height less the skin as its separation.
+	const LD alpha = 0.2L;
+	const ShapePtr heart = MakeHeart(double(alpha));
+	const double radii = 0.01, tilt = 0.0027;
+	const Pose pose0(Vec2(0.0, 0.0), kPi + tilt);
+	const std::vector<WorldPoint> outline0 = HeartOutline(alpha, pose0, 40000);
+	LD lowest = 1e9L;
+	for (const WorldPoint& p : outline0)
+		lowest = std::min(lowest, p.y);
+	const Pose pose(Vec2(0.1, 0.003 - double(lowest)), kPi + tilt);
+	const std::vector<WorldPoint> outline = HeartOutline(alpha, pose, 40000);
+	WorldPoint low[2] = {{0.0L, 1e9L}, {0.0L, 1e9L}}; // left and right of the heart's axis
+	for (const WorldPoint& p : outline)
+	{
+		const int side = p.x > LD(pose.p.x) ? 1 : 0;
+		if (p.y < low[side].y)
+			low[side] = p;
+	}
+	REQUIRE(double(std::min(low[0].y, low[1].y)) == doctest::Approx(0.003).epsilon(1e-6));
+	REQUIRE(double(std::max(low[0].y, low[1].y)) > 0.004);
+	REQUIRE(double(std::max(low[0].y, low[1].y)) < radii);
+	const ContactManifold m = OnFloorSegment(*heart, pose, radii);
+	REQUIRE(m.count == 2);
+	for (int k = 0; k < 2; ++k)
+	{
+		CAPTURE(k);
+		const WorldPoint& r = low[m.points[k].pointB.x > pose.p.x ? 1 : 0];
+		CHECK(std::fabs(m.points[k].pointB.x - double(r.x)) < 1e-4); // (the lobe is flat there)
+		CHECK(m.points[k].separation == doctest::Approx(double(r.y) - radii).epsilon(1e-5));
+	}
+	CHECK((m.points[0].pointB.x > pose.p.x) != (m.points[1].pointB.x > pose.p.x));
 }

@@ -194,6 +194,10 @@ TEST_CASE("b2a_demo_game: the pyramid as stiff as the boxes', the ramp at the te
 	CHECK(rays["hit_points_off_the_surface"] == 0);
 	CHECK(rays["rays_through_a_particle_before_the_hit"] == 0);
 	CHECK(s["bucket"]["asleep_at_s"]["polygons8"].get<double>() > 0.0);
+	// (--quick compares the chosen family alone; the full run every family and the mixed pile.)
+	const json& mixed = s["bucket"]["asleep_by_family"]["mixed"];
+	CHECK(mixed["polygons8_s"].get<double>() == s["bucket"]["asleep_at_s"]["polygons8"].get<double>());
+	CHECK(mixed["ratio"].get<double>() == s["bucket"]["asleep_ratio"].get<double>());
 	for (const char* f : {"pyramid.svg", "pyramid_boxes.svg", "pyramid_top.svg", "ramp.svg", "bucket.svg", "bucket_polygons.svg",
 	                      "bucket_awake.svg"})
 		CHECK(Exists(std::string("demo_out/game/") + f));

@@ -26,7 +26,9 @@ struct ManifoldPoint
 {
 	Vec2 pointB;             ///< point on B's surface (world)
 	double separation = 0.0; ///< (pointB − pointA)·normal − radii, ≤ 0 for every reported point
-	int id = 0;              ///< 0 for the single point or the lower end of a patch, 1 for its upper end
+	/// 0 for the single point or the lower end of a patch, 1 for its upper end; a non-convex
+	/// pair's lobes and parts of the overlap keep theirs while they last (0 to 3, ManifoldCache)
+	int id = 0;
 };
 
 /// A contact in the form Box2D's solver takes: one normal, one point on A (its tangent plane)
@@ -53,6 +55,11 @@ struct ManifoldCache
 	double offFaceB = std::numeric_limits<double>::quiet_NaN(); ///< the same for B
 	bool validA = false;               ///< faceA holds a face
 	bool validB = false;               ///< faceB holds a face
+	/// Points of a non-convex pair's last manifold (lobes on a face, or two parts of the overlap),
+	/// whose ids the next manifold's points take by nearness: partCount of them.
+	signed char partCount = 0;
+	signed char partId[2] = {0, 1}; ///< their ids
+	float partB[2][2] = {{0.0f, 0.0f}, {0.0f, 0.0f}}; ///< their places on B (B's body frame)
 };
 
 /// Build the manifold of a contact, as Box2D builds its polygons': two particles that touch face

@@ -159,7 +159,7 @@ AnalyticContact::AnalyticContact(b2Fixture* a, int32 indexA, b2Fixture* b, int32
 		m_patchMinWidth = (pa ? pa : pb)->Data().patchMinWidth;
 	}
 	if (pa)
-		m_solver = pa->Data().solver;
+		m_solver = &pa->Data().solver;
 	if (kind == Kind::polygonCircle && pa)
 	{
 		const b2CircleShape* circle = static_cast<const b2CircleShape*>(b->GetShape());
@@ -290,7 +290,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 			if (distance > 0.0 && SeparatedAlong(shapeA, poseA, shapeB, poseB, between / distance))
 				return;
 		}
-		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, m_solver, &m_warm);
+		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, m_solver ? *m_solver : SolverOptions{}, &m_warm);
 		m_wasTouching = c.Ok() && c.separation <= 0.0;
 		if (c.Ok())
 		{
@@ -310,7 +310,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		const b2CircleShape* circle = static_cast<const b2CircleShape*>(m_fixtureB->GetShape());
 		const Pose poseA = Compose(bodyA, pa.local);
 		const Pose poseC(ToWorld(bodyB, V(circle->m_p)), bodyB.q);
-		c = ComputeContact(*pa.shape, poseA, *m_circle, poseC, MethodChoice::automatic, m_solver, &m_warm);
+		c = ComputeContact(*pa.shape, poseA, *m_circle, poseC, MethodChoice::automatic, m_solver ? *m_solver : SolverOptions{}, &m_warm);
 		if (!c.Ok())
 			return;
 		c.pointB = poseC.p;

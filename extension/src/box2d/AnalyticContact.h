@@ -67,7 +67,9 @@ private:
 	bool m_prepared = false;     // m_preparedManifold holds a manifold computed ahead of the step (Prepare)
 	Side m_sideA, m_sideB;
 	double m_patchTolerance = 0.0, m_patchMinWidth = 0.0; // the analytic sides' (the smaller of two)
-	SolverOptions m_solver;                                // A's, where A is analytic
+	// A's solver options, where A is analytic (its fixture's data, which outlives the contact;
+	// a pointer, not a copy: the contact must fit Box2D's largest block).
+	const SolverOptions* m_solver = nullptr;
 	WarmStart m_warm;       // Newton's previous solution (analytic pairs)
 	Vec2 m_lastNormal;      // previous normal, world (a guess against polygons, a separating axis to try between analytic particles)
 	// Box2D frees contacts without running their destructors when a world is destroyed, so

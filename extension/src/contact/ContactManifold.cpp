@@ -341,7 +341,11 @@ int LobesOnFace(const Face& fa, const ManifoldSide& b, double tol, double radii,
 	for (int i = 0; i < count; ++i)
 	{
 		const double d = depth[size_t(i)];
-		if (!(d <= depth[size_t((i + count - 1) % count)] && d < depth[size_t((i + 1) % count)]) || d > tol + 2.0 * samples.maxDeviation)
+		// (A lobe reported touches within the radii: a filter without them dropped, against a
+		// chain link's 1 cm skin, whichever lobe was not the lowest, and the point hopped between
+		// the lobes step after step.)
+		if (!(d <= depth[size_t((i + count - 1) % count)] && d < depth[size_t((i + 1) % count)]) ||
+		    d > radii + tol + 2.0 * samples.maxDeviation)
 			continue;
 		double a0, a1;
 		samples.NeighbourAngles(i, a0, a1);
@@ -381,6 +385,268 @@ int LobesOnFace(const Face& fa, const ManifoldSide& b, double tol, double radii,
 	}
 	return found;
 }
+
+// One connected part of the overlap of two particles: the deepest point of one particle's
+// surface inside the other, the other's outward normal there turned to point from A to B, and
+// the separation along it (negative).
+struct OverlapPart
+{
+	Vec2 pointA, pointB, normal;
+	double separation = 0.0;
+};
+
+// The parts of the overlap that the surface of `inner` shows inside `outer` (world): each local
+// minimum of outer's level along a run of inner's cached surface samples inside outer is one
+// part, refined between its neighbours (Brent's method on the polar angle, to 1e-10 rad). The
+// normal is outer's gradient there (the level's minimum along inner's curve is where the two
+// normals agree) and the depth the distance along it to outer's surface (Newton on the level
+// along the line, from the first-order depth, at most eight steps). `outerIsA` says which side
+// outer is, for the normal's sense (from A to B) and the points. At most `max` parts, the
+// deepest kept; none where inner lies wholly inside outer.
+int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const Pose& pi, bool outerIsA, OverlapPart* out, int max)
+{
+	const SurfaceSamples& samples = inner.SamplesRef();
+	const int n = samples.Count();
+	const Pose rel = Relative(po, pi); // inner's body to outer's body
+	std::vector<Vec2> x(static_cast<size_t>(n));
+	std::vector<double> level(static_cast<size_t>(n), 0.0);
+	for (int i = 0; i < n; ++i)
+		x[size_t(i)] = ToWorld(rel, samples.point[size_t(i)]);
+	outer.Levels(x.data(), n, level.data());
+	const double surface = outer.SurfaceLevel();
+	auto inside = [&](int i) { return level[size_t(i)] < surface; };
+	int start = -1;
+	for (int i = 0; i < n && start < 0; ++i)
+		if (!inside(i))
+			start = i;
+	if (start < 0)
+		return 0;
+	// Every local minimum of the level along a run is a part: a long run (a lobe lying along the
+	// other's side) has one at either end, and the contact, warm-started, at either; with the
+	// run's deepest sample alone, the part at the contact's end was its own, and the manifold
+	// had two points one step and one the next.
+	int found = 0;
+	for (int k = 1; k <= n; ++k)
+	{
+		const int deepest = (start + k) % n;
+		const double here = level[size_t(deepest)];
+		if (!inside(deepest) || !(here <= level[size_t((deepest + n - 1) % n)] && here < level[size_t((deepest + 1) % n)]))
+			continue;
+		double lo, hi;
+		samples.NeighbourAngles(deepest, lo, hi);
+		auto levelAt = [&](double theta) { return outer.Level(ToWorld(rel, inner.SurfacePoint(theta))); };
+		const ScalarResult m = MinimizeBrent(levelAt, lo, hi, 1e-10, 1e-12, 60);
+		const Vec2 q = ToWorld(rel, inner.SurfacePoint(m.x)); // outer's body frame
+		const Vec2 g = outer.Gradient(q);
+		if (!(m.fx < surface) || !(LengthSquared(g) > 0.0) || !std::isfinite(LengthSquared(g)))
+			continue;
+		const Vec2 u = Normalize(g);
+		double s = (surface - m.fx) / Length(g);
+		for (int it = 0; it < 8; ++it)
+		{
+			const LevelDerivatives d = outer.Derivatives(q + s * u);
+			const double slope = Dot(d.gradient, u);
+			if (!(slope > 0.0))
+				break;
+			const double step = (surface - d.value) / slope;
+			s += step;
+			if (std::fabs(step) <= 1e-12 * outer.BoundingRadius())
+				break;
+		}
+		if (!(s > 0.0) || !std::isfinite(s))
+			continue;
+		OverlapPart part;
+		const Vec2 qw = ToWorld(po, q), sw = ToWorld(po, q + s * u), uw = Rotate(po.q, u);
+		part.normal = outerIsA ? uw : -uw;
+		part.pointA = outerIsA ? sw : qw;
+		part.pointB = outerIsA ? qw : sw;
+		part.separation = -s;
+		if (found < max)
+			out[found++] = part;
+		else
+		{
+			int shallowest = 0;
+			for (int j = 1; j < found; ++j)
+				if (out[j].separation > out[shallowest].separation)
+					shallowest = j;
+			if (part.separation < out[shallowest].separation)
+				out[shallowest] = part;
+		}
+	}
+	return found;
+}
+
+// Two particles of which one is not convex may overlap in two places (a lobe in the other's
+// notch, a particle between a heart's lobes); the contact is the deepest by the scaling factor,
+// and which one that is changes with every small motion. A one-point manifold then jumps between
+// them step after step, the normal turning by up to 80 degrees and the warm start's impulse
+// applied where the other part was: a pile of hearts churns at 0.5 m/s and never sleeps. Where a
+// second part overlaps (B's surface inside A, farther than a tenth of the smaller particle from
+// the contact's part; A's surface inside B where B's shows none), the manifold holds two parts:
+// one normal (Box2D's manifold has one), the parts' normals weighted by their depths up to
+// `full`, each point's separation the one along its own normal divided by the cosine between
+// the two (what moving along the common normal must undo). The two are the contact's part and
+// the deepest other, or the last manifold's two while both still overlap at least half as deep
+// as the deepest part: of three parts of similar depths (a heart wedged between two lobes), the
+// pair otherwise changed every other step, the normal turning by 0.5 rad. Where either part's
+// normal lies more than 60 degrees from the common one, or any part is deeper than a tenth of
+// the smaller particle (overlaps made, not met, where the parts' normals say little), the
+// contact's point alone.
+ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, const ManifoldSide& b, double radii, double full,
+                                const ContactManifold& single, const ManifoldCache& cache)
+{
+	constexpr int kMax = 4;
+	OverlapPart parts[kMax + 1]; // the contact's own part first
+	const double apart = 0.1 * std::min(a.shape->BoundingRadius(), b.shape->BoundingRadius());
+	if (single.points[0].separation < -apart)
+		return single; // a deep overlap (particles created inside each other): the contact alone
+	parts[0] = {c.pointA, c.pointB, c.normal, single.points[0].separation + radii};
+	auto others = [&](int count) {
+		int kept = 1;
+		for (int k = 1; k <= count; ++k)
+		{
+			const OverlapPart& p = parts[k];
+			if (Distance(p.pointB, c.pointB) <= apart || Distance(p.pointA, c.pointA) <= apart || p.separation - radii < -apart)
+				continue; // the contact's own part, or one as deep as only a deep overlap has
+			parts[kept++] = p;
+		}
+		return kept;
+	};
+	// Each part of the overlap shows both surfaces inside the other, at deepest points a part's
+	// width apart: taken from either side as it came deeper, the second point hopped between
+	// them (0.2 m, the normal turning 0.5 rad a step, in a settled pile of hearts). B's surface
+	// inside A names the parts; A's inside B only where that shows no second part.
+	int count = others(OverlapParts(*a.shape, a.pose, *b.shape, b.pose, true, parts + 1, kMax));
+	if (count == 1)
+		count = others(OverlapParts(*b.shape, b.pose, *a.shape, a.pose, false, parts + 1, kMax));
+	if (count == 1)
+		return single;
+	int pick[2] = {0, 1}, deepest = 0;
+	for (int k = 1; k < count; ++k)
+	{
+		if (parts[k].separation < parts[pick[1]].separation)
+			pick[1] = k;
+		if (parts[k].separation < parts[deepest].separation)
+			deepest = k;
+	}
+	if (cache.partCount == 2)
+	{
+		// The parts nearest the last manifold's two points (B's frame), if both are still there.
+		int kept[2] = {-1, -1};
+		for (int j = 0; j < 2; ++j)
+		{
+			const Vec2 old(cache.partB[j][0], cache.partB[j][1]);
+			double nearest = apart;
+			for (int k = 0; k < count; ++k)
+				if (Distance(ToBody(b.pose, parts[k].pointB), old) <= nearest)
+				{
+					nearest = Distance(ToBody(b.pose, parts[k].pointB), old);
+					kept[j] = k;
+				}
+		}
+		auto deepEnough = [&](int k) { return k >= 0 && parts[k].separation - radii <= 0.5 * (parts[deepest].separation - radii); };
+		if (kept[0] != kept[1] && deepEnough(kept[0]) && deepEnough(kept[1]))
+		{
+			pick[0] = kept[0];
+			pick[1] = kept[1];
+		}
+	}
+	const OverlapPart& p1 = parts[pick[0]];
+	const OverlapPart& p2 = parts[pick[1]];
+	// The common normal leans towards each part by its depth, so that a part that starts to touch
+	// (or stops) turns it from the other's normal continuously: weighted equally, a grazing part
+	// coming and going turned a resting contact's normal by 0.3 rad a step. Both deeper than
+	// `full` weigh the same: weighted by depths alone, two resting parts whose depths the solver
+	// trades step by step turned it by 0.1-0.5 rad a step.
+	const Vec2 n1 = p1.normal, n2 = p2.normal;
+	const double w1 = std::clamp(-(p1.separation - radii), 0.0, full), w2 = std::clamp(-(p2.separation - radii), 0.0, full);
+	const Vec2 sum = w1 + w2 > 0.0 ? w1 * n1 + w2 * n2 : n1 + n2;
+	if (!(LengthSquared(sum) > 0.0))
+		return single;
+	const Vec2 n = Normalize(sum);
+	if (!(Dot(n, n1) >= 0.5 && Dot(n, n2) >= 0.5))
+		return single;
+	ContactManifold m;
+	m.normal = n;
+	m.pointA = p1.pointA;
+	const Vec2 points[2] = {p1.pointB, p2.pointB};
+	const double separations[2] = {p1.separation - radii, p2.separation - radii};
+	const Vec2 normals[2] = {n1, n2};
+	const Vec2 t = Perp(n);
+	const int first = Dot(points[0], t) <= Dot(points[1], t) ? 0 : 1;
+	for (int k = 0; k < 2; ++k)
+	{
+		const int j = k == 0 ? first : 1 - first;
+		const double sep = separations[j] / Dot(n, normals[j]);
+		// B's point moved along n so that its distance from A's plane is that separation (Box2D
+		// measures every point of a manifold from one plane through pointA).
+		const Vec2 q = points[j] + (sep - (Dot(points[j] - m.pointA, n) - radii)) * n;
+		m.points[k] = {q, sep, k};
+	}
+	m.count = 2;
+	return m;
+}
+
+// Ids for a non-convex pair's points (lobes on a face, parts of the overlap), which need not come
+// in the same order or number from one step to the next: each takes the id of the nearest of the
+// last manifold's points on B (B's body frame), so that Box2D carries each point's impulse with
+// its own lobe or part; a point where none was (farther than a tenth of B from every one) takes
+// an id none of them had, so that Box2D starts it without the impulse of a point elsewhere.
+// (In a pile of hearts the second lobe or part comes and goes, and by order alone the one that
+// stays swapped ids with it: the warm start then pushed where the other had been.)
+void MatchPartIds(ContactManifold& m, const ManifoldSide& b, ManifoldCache& cache)
+{
+	Vec2 here[2];
+	for (int k = 0; k < m.count; ++k)
+		here[k] = ToBody(b.pose, m.points[k].pointB);
+	const int before = cache.partCount;
+	const double far = 0.1 * b.shape->BoundingRadius();
+	auto old = [&](int j) { return Vec2(cache.partB[j][0], cache.partB[j][1]); };
+	// match[k]: the old point whose id new point k takes, or −1. Two new points keep the pairing
+	// with the smaller total distance.
+	int match[2] = {-1, -1};
+	if (m.count == 1 && before > 0)
+		match[0] = before == 1 || Distance(here[0], old(0)) <= Distance(here[0], old(1)) ? 0 : 1;
+	else if (m.count == 2 && before == 1)
+		match[Distance(here[0], old(0)) <= Distance(here[1], old(0)) ? 0 : 1] = 0;
+	else if (m.count == 2 && before == 2)
+	{
+		const double straight = Distance(here[0], old(0)) + Distance(here[1], old(1));
+		const double crossed = Distance(here[1], old(0)) + Distance(here[0], old(1));
+		match[0] = straight <= crossed ? 0 : 1;
+		match[1] = 1 - match[0];
+	}
+	bool used[4] = {false, false, false, false};
+	for (int k = 0; k < m.count; ++k)
+	{
+		if (match[k] >= 0 && !(Distance(here[k], old(match[k])) <= far))
+			match[k] = -1;
+		if (match[k] >= 0)
+			used[cache.partId[match[k]]] = true;
+	}
+	for (int j = 0; j < before; ++j)
+		used[cache.partId[j]] = true; // (an id that stopped is not given to a point elsewhere)
+	for (int k = 0; k < m.count; ++k)
+	{
+		if (match[k] >= 0)
+		{
+			m.points[k].id = cache.partId[match[k]];
+			continue;
+		}
+		int fresh = 0;
+		while (used[fresh])
+			++fresh;
+		m.points[k].id = fresh;
+		used[fresh] = true;
+	}
+	cache.partCount = static_cast<signed char>(m.count);
+	for (int k = 0; k < m.count; ++k)
+	{
+		cache.partId[k] = static_cast<signed char>(m.points[k].id);
+		cache.partB[k][0] = float(here[k].x);
+		cache.partB[k][1] = float(here[k].y);
+	}
+}
 } // namespace
 
 ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide& a, const ManifoldSide& b, double tol,
@@ -397,16 +663,25 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 		return m;
 	m.count = 1;
 	m.points[0] = {c.pointB, sep0, 0};
+	const bool twoParts = a.shape && b.shape && !a.point && !b.point && !(a.shape->IsConvex() && b.shape->IsConvex());
 	const Face fa = SideFace(a, c.pointA, c.normal, tol, cache->faceA, cache->validA, cache->offFaceA);
 	if (!fa.valid)
-		return m;
+	{
+		if (!twoParts)
+			return m;
+		ContactManifold parts = TwoPartManifold(c, a, b, radii, 2.0 * tol, m, *cache);
+		MatchPartIds(parts, b, *cache);
+		return parts;
+	}
 	if (b.shape && !b.shape->IsConvex() && !b.point)
 	{
 		ContactManifold lobes;
 		lobes.normal = fa.normal;
 		lobes.pointA = fa.centre;
 		lobes.count = LobesOnFace(fa, b, tol, radii, lobes.points);
-		return lobes.count > 0 ? lobes : m;
+		ContactManifold& out = lobes.count > 0 ? lobes : m;
+		MatchPartIds(out, b, *cache);
+		return out;
 	}
 	const Face fb = SideFace(b, c.pointB, -c.normal, tol, cache->faceB, cache->validB, cache->offFaceB);
 	if (!fb.valid)
