@@ -41,7 +41,7 @@ struct SurfaceWalk
 	double Slope(double theta) const
 	{
 		++evaluations;
-		const Vec2 u(std::cos(theta), std::sin(theta)), up(-u.y, u.x);
+		const Vec2 u = PolarDirection(theta), up(-u.y, u.x);
 		const double r = b.RadiusAt(u, levelB);
 		const Vec2 X = r * u;
 		const Vec2 gB = b.Gradient(X);
