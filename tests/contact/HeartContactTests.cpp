@@ -553,3 +553,30 @@ TEST_CASE("grid scale: a smooth minimum beside a corner ray's valley in the same
 		CHECK(double(ref::Dist(r.point, want.point)) < 1e-7 * size);
 	}
 }
+
+TEST_CASE("grid scale: a corner ray crossing a particle thinner than the samples' chord")
+{
+	// From b2a_stress --seed 1 (configuration 560689): a heart of α = 89 rescaled onto a plank
+	// 82.5 × 0.132 (n = 14, m = 17) that crosses it. The minimum lies where the plank's surface
+	// crosses the heart's tip ray, but the crossing's bracket, the chord's projections ± the
+	// chord (0.65), held both of the plank's sides, with the level above the plank's at both
+	// ends: no crossing was solved, and a point beside the ray gave 14.744 for 14.336. The
+	// configuration and neighbours (the plank turned by 1e-6 and 1e-3 rad, the heart moved by
+	// 1e-3 of its size) against the brute-force minimum.
+	const Posed heart = Heart(0x1.64e1a4a34ce9ep+6, Vec2(-0x1.03cd33a2e5664p+4, 0x1.b5c31c4284eddp+4), 0x1.02b0399736c28p-2);
+	const Posed plank = Super(0x1.49eb20a24ce5cp+6, 0x1.0e67edc426d0ep-3, 14.0, 17.0, Vec2(0x1.84e24802b5bd5p+5, 0x1.0fac3e5bcb07ap+3),
+	                          -0x1.da482145dbeep-3);
+	const double size = heart.shape->BoundingRadius(), turn = plank.pose.q.Angle();
+	const Pose heartPoses[] = {heart.pose, heart.pose, heart.pose, Pose(heart.pose.p + Vec2(0.0, 1e-3 * size), heart.pose.q.Angle())};
+	const Pose plankPoses[] = {plank.pose, Pose(plank.pose.p, turn + 1e-6), Pose(plank.pose.p, turn - 1e-3), plank.pose};
+	for (int i = 0; i < 4; ++i)
+	{
+		CAPTURE(i);
+		const Posed a{heart.shape, heart.refShape, heartPoses[i]}, b{plank.shape, plank.refShape, plankPoses[i]};
+		const ref::SurfaceMinResult want = BruteForce(a, b);
+		const LevelResult r = SolveScaleA(*a.shape, a.pose, *b.shape, b.pose);
+		REQUIRE(r.Ok());
+		CHECK(std::fabs(LD(r.level) - want.value) <= 1e-9L * std::max(std::fabs(want.value), a.refShape.Own()));
+		CHECK(double(ref::Dist(r.point, want.point)) < 1e-7 * size);
+	}
+}
