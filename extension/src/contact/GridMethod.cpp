@@ -347,21 +347,20 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 	// runs) the same way; the ones solved here are marked, and it skips them (it would solve
 	// them again, to the same crossing).
 	const Pose& bInA = walk.bInA;
+	bool crossed = false;
 	for (const int i : {(k + n - 1) % n, k})
 	{
 		const Vec2 p = ToWorld(bInA, samplePoint(i)), q = ToWorld(bInA, samplePoint((i + 1) % n));
 		if (!MeetsCornerRay(walk.a, p, q))
 			continue;
 		markSolved(i);
-		CornerRayCrossing(walk, p, q, value, point);
+		crossed = CornerRayCrossing(walk, p, q, value, point) || crossed;
 	}
-	// The bracketing search too, the lower answer kept: a smooth minimum may share the bracket
-	// with the crossing's valley (a small heart rescaled onto a large one: the valley at 1182.7,
-	// the minimum beside it at 1173.0).
+	if (crossed)
+		return;
 	double theta = sampleTheta;
-	const double before = value;
 	Refine(walk, lo, hi, theta, value);
-	if (value < before)
+	if (theta != sampleTheta)
 		point = walk.b.SurfacePoint(theta, walk.levelB);
 }
 // SolveGridScale's work arrays, one set per thread.
