@@ -49,7 +49,8 @@ TEST_CASE("fuzz regression: a particle too thin for float or for its samples is 
 	// The world fuzzer (CI, seed 1) found an integer division by zero in the proxy builder: a
 	// superellipse 1e-237 wide and 0.57 long has one distinct surface sample (every sample lies
 	// within 1e-237 of the centre), the proxy polygon shrank to one vertex, and the convex hull
-	// of that one vertex was empty. With density 0 no mass check stands in the way. (The input's
+	// of that one vertex was empty (its samples on the axes, exact since, now reach its tips, and
+	// its float proxy is a segment). With density 0 no mass check stands in the way. (The input's
 	// bytes were not kept; the shape is one of that class, found by a search over such needles.)
 	// With density 1 the same needle, and an ellipse 6.6e-40 wide, have a mass below float's
 	// normal range, where Box2D's ResetMassData asserted (the fuzzer's second find).

@@ -443,3 +443,144 @@ TEST_CASE("grid contact: of two particles of very different sizes the larger is 
 	CHECK(c.touching == want);
 	CHECK(std::fabs(LD(c.level) - ba.value) <= 1e-9L * std::max(std::fabs(ba.value), b.refShape.Own()));
 }
+
+TEST_CASE("heart: the tip and the notch lie exactly on the axis, at the closed-form radius")
+{
+	// On the axis x = 0 the level is y², so the tip is (0, −√α) and the notch (0, √α). The angle
+	// ±π/2 in double has a cosine of 6e-17, not 0, and the level's |x|^{2/3} term turned that
+	// into a tip 1e-11 of the size off the axis and along it (every one-sided scale at a heart's
+	// tip off by up to 3e-7 of the level).
+	for (const double alpha : {1e-7, 2.7e-3, 0.57, 7.0, 6762.0})
+	{
+		CAPTURE(alpha);
+		const ShapePtr h = MakeHeart(alpha);
+		const double root = std::sqrt(alpha);
+		const Vec2 tip = h->SurfacePoint(-0.5 * kPi), notch = h->SurfacePoint(0.5 * kPi);
+		CHECK(tip.x == 0.0);
+		CHECK(notch.x == 0.0);
+		CHECK(std::fabs(tip.y + root) <= 4e-16 * root);
+		CHECK(std::fabs(notch.y - root) <= 4e-16 * root);
+		for (const Vec2 corner : h->CornerPoints())
+		{
+			CHECK(corner.x == 0.0);
+			CHECK(std::fabs(std::fabs(corner.y) - root) <= 4e-16 * root);
+		}
+	}
+}
+
+TEST_CASE("grid scale: a heart's tip against a smooth particle is A's level at the exact tip")
+{
+	// From b2a_stress --seed 1 (configurations 678, 2816, 5578, 22051): a superellipse A rescaled
+	// onto a heart B built touching at B's tip, each with neighbours (B turned by 1e-6 and 1e-3
+	// rad about its centre, and moved by 1e-3 of its size). Where B's tip is the lowest point of
+	// A's level on B's surface (the dense minimum, which cannot lie below the true one, is not
+	// lower), the answer is A's level at (0, −√α) of B, computed in long double. The tip's
+	// sample was 1e-11 of B's size off (see above): levels off by 1.5e-9 to 2.8e-7.
+	struct Case
+	{
+		double a, b, n, m;
+		Pose pa;
+		double alpha;
+		Pose pb;
+	};
+	const Case cases[] = {
+		{0x1.4460daceb1673p-15, 0x1.9c8109d89945ep-10, 0x1.338a25ee61eb3p+1, 0x1.06adbc41378f4p+2,
+		 Pose(Vec2(0x1.9dc77ed4b7c01p-9, 0x1.8ba91e8c71fd1p-8), 0x1.148370f7b06b4p+1), 0x1.bf77ace6bcdecp-14,
+		 Pose(Vec2(-0x1.b8359e9e76fb1p-8, 0x1.245ec549e2bd9p-11), 0x1.08eb2936eeb58p+1)},
+		{0x1.934a536057e6ap-8, 0x1.1491551fe053p-16, 2.0, 2.0, Pose(Vec2(0x1.c1d5253f635a1p-7, -0x1.19d1672bc375ap-8), -0x1.4e1c48e7b39ep-4),
+		 0x1.51c634e206bc3p-7, Pose(Vec2(-0x1.46d2234febda7p-7, -0x1.a62b8adfb0b89p-4), 0x1.7456cd6a37554p+1)},
+		{0x1.82c59bfb38dbfp-12, 0x1.ac068520ca8f3p-10, 11.0, 11.0, Pose(Vec2(-0x1.1e80078c29ba2p-8, 0x1.6bab8d931d94ep-8), 0x1.1fdc84b177c34p+0),
+		 0x1.a049d3b373c9ap-2, Pose(Vec2(0x1.86714fb0b7402p-2, -0x1.02c939311d556p-1), -0x1.3f8aae735bd49p+1)},
+		{0x1.cfeedc5174cap-4, 0x1.1e067534d833dp-12, 2.0, 2.0, Pose(Vec2(0x1.275abccb495b2p-2, -0x1.a71d3adad15e4p-2), 0x1.93008734179dp-1),
+		 0x1.1988002b5bp-2, Pose(Vec2(0x1.900a249730b5ap-1, -0x1.354468fb7e99cp-1), -0x1.f577e873b5afap+0)},
+	};
+	int atTip = 0;
+	for (const Case& k : cases)
+	{
+		const Posed a{MakeSuperellipse(k.a, k.b, k.n, k.m), ref::RefShape::Super(k.a, k.b, k.n, k.m), k.pa};
+		const ShapePtr heart = MakeHeart(k.alpha);
+		const double size = heart->BoundingRadius();
+		const double turn = k.pb.q.Angle();
+		const Pose neighbours[] = {k.pb,
+		                           Pose(k.pb.p, turn + 1e-6),
+		                           Pose(k.pb.p, turn - 1e-3),
+		                           Pose(k.pb.p + Vec2(1e-3 * size, -0.5e-3 * size), turn)};
+		for (const Pose& pb : neighbours)
+		{
+			const Posed b{heart, ref::RefShape::Heart(k.alpha), pb};
+			CAPTURE(k.alpha);
+			CAPTURE(pb.q.Angle());
+			const ref::RefPose ra = ref::Of(a.pose), rb = ref::Of(b.pose);
+			const V tip = ref::ToWorldL(rb, V{0.0L, -std::sqrt(LD(k.alpha))});
+			const LD expected = a.refShape.Level(ref::ToBodyL(ra, tip));
+			const ref::SurfaceMinResult dense = BruteForce(a, b);
+			if (dense.value < expected * (1.0L - 1e-12L))
+				continue; // the minimum left the tip: not this test's reference
+			++atTip;
+			const LevelResult r = SolveScaleA(*a.shape, a.pose, *b.shape, b.pose);
+			REQUIRE(r.Ok());
+			CHECK(double(std::fabs(LD(r.level) - expected) / expected) < 1e-10);
+			CHECK(double(ref::Dist(r.point, tip)) < 1e-14 * size);
+		}
+	}
+	CHECK(atTip >= 12); // (most neighbours keep the tip as the minimum)
+}
+
+TEST_CASE("grid scale (known failure): a smooth minimum beside a corner ray's valley in the same bracket" *
+          doctest::should_fail())
+{
+	// From b2a_stress --seed 1 (configuration 144854): two hearts of α = 2.6e5 overlapping, A
+	// rescaled onto B's surface. Between two of B's samples A's level has both the valley where
+	// B's curve crosses A's tip ray (1182.7) and, beside it, the smooth minimum (1173.0); Newton
+	// failed from both starts and the crossing alone is taken. Running the bracketing search
+	// after every crossing finds it, but costs heart pairs 1.2 to 3 times their time (Newton
+	// fails wherever the minimum is a tip's valley, the common case). Each pose and its
+	// neighbours (B turned by 1e-6 and 1e-3 rad, A moved by 1e-3 of the size) against the
+	// brute-force minimum.
+	const double alpha = 0x1.fec4d77c102fcp+18;
+	const Posed a = Heart(alpha, Vec2(0x1.343073a8cda31p+11, -0x1.9e2bf824384aap+9), 0x1.369c2095e53b8p-2);
+	const Pose pb(Vec2(0x1.7054d238bd137p+11, -0x1.5d89388e937f3p+10), 0x1.431ade2410e8p+1);
+	const double size = a.shape->BoundingRadius();
+	const Pose poses[][2] = {{a.pose, pb},
+	                         {a.pose, Pose(pb.p, pb.q.Angle() + 1e-6)},
+	                         {a.pose, Pose(pb.p, pb.q.Angle() - 1e-3)},
+	                         {Pose(a.pose.p + Vec2(1e-3 * size, 0.0), a.pose.q.Angle()), pb}};
+	for (const auto& pair : poses)
+	{
+		const Posed pa{a.shape, a.refShape, pair[0]};
+		const Posed b{MakeHeart(alpha), ref::RefShape::Heart(alpha), pair[1]};
+		CAPTURE(pair[1].q.Angle());
+		const ref::SurfaceMinResult want = BruteForce(pa, b);
+		const LevelResult r = SolveGridScale(*pa.shape, pa.pose, *b.shape, b.pose);
+		REQUIRE(r.Ok());
+		CHECK(std::fabs(LD(r.level) - want.value) <= 1e-9L * std::max(std::fabs(want.value), LD(alpha)));
+		CHECK(double(ref::Dist(r.point, want.point)) < 1e-7 * size);
+	}
+}
+
+TEST_CASE("grid scale: a corner ray crossing a particle thinner than the samples' chord")
+{
+	// From b2a_stress --seed 1 (configuration 560689): a heart of α = 89 rescaled onto a plank
+	// 82.5 × 0.132 (n = 14, m = 17) that crosses it. The minimum lies where the plank's surface
+	// crosses the heart's tip ray, but the crossing's bracket, the chord's projections ± the
+	// chord (0.65), held both of the plank's sides, with the level above the plank's at both
+	// ends: no crossing was solved, and a point beside the ray gave 14.744 for 14.336. The
+	// configuration and neighbours (the plank turned by 1e-6 and 1e-3 rad, the heart moved by
+	// 1e-3 of its size) against the brute-force minimum.
+	const Posed heart = Heart(0x1.64e1a4a34ce9ep+6, Vec2(-0x1.03cd33a2e5664p+4, 0x1.b5c31c4284eddp+4), 0x1.02b0399736c28p-2);
+	const Posed plank = Super(0x1.49eb20a24ce5cp+6, 0x1.0e67edc426d0ep-3, 14.0, 17.0, Vec2(0x1.84e24802b5bd5p+5, 0x1.0fac3e5bcb07ap+3),
+	                          -0x1.da482145dbeep-3);
+	const double size = heart.shape->BoundingRadius(), turn = plank.pose.q.Angle();
+	const Pose heartPoses[] = {heart.pose, heart.pose, heart.pose, Pose(heart.pose.p + Vec2(0.0, 1e-3 * size), heart.pose.q.Angle())};
+	const Pose plankPoses[] = {plank.pose, Pose(plank.pose.p, turn + 1e-6), Pose(plank.pose.p, turn - 1e-3), plank.pose};
+	for (int i = 0; i < 4; ++i)
+	{
+		CAPTURE(i);
+		const Posed a{heart.shape, heart.refShape, heartPoses[i]}, b{plank.shape, plank.refShape, plankPoses[i]};
+		const ref::SurfaceMinResult want = BruteForce(a, b);
+		const LevelResult r = SolveScaleA(*a.shape, a.pose, *b.shape, b.pose);
+		REQUIRE(r.Ok());
+		CHECK(std::fabs(LD(r.level) - want.value) <= 1e-9L * std::max(std::fabs(want.value), a.refShape.Own()));
+		CHECK(double(ref::Dist(r.point, want.point)) < 1e-7 * size);
+	}
+}

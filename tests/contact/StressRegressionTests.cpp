@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -345,29 +346,41 @@ TEST_CASE("stress: the automatic common level of 1000:1 needles is as exact as N
 	}
 }
 
-TEST_CASE("stress: nearly concentric high-exponent particles get their common level from the grid")
+TEST_CASE("stress: nearly concentric high-exponent particles: the grid's level is no solution, and says so")
 {
 	// Centres 1.5e-4 apart, sizes 0.0033 and 0.002 (n = 2.08, m = 14.4 against n = m = 17): the
 	// common level is 1.05e-25. Newton's Jacobian is singular and the min–max fallback fails to
 	// bracket its multiplier: the inner minimisation of ψA + μψB, flat to 1e-22 over the whole
 	// region, stalls, so g(ν) = ψA − ψB keeps its sign as ν goes to −∞. The grid, the chain's
-	// last step, needs no start: its level against the long-double reference (CommonLevelRef).
+	// last step, finds the level to 1e-8 (against the long-double reference, CommonLevelRef), but
+	// at its point the two normals are 1.1 rad apart (in long double), so it is no solution: the
+	// level solve fails with its reason, Newton from the grid's point does not converge, and the
+	// contact takes the axis of least overlap.
 	const double aa = 0x1.815dbb5696e4ep-13, ab = 0x1.ad15c70a11afap-9, an = 0x1.0aa5aab5dc0d5p+1, am = 0x1.ce304908251d4p+3;
 	const double br = 0x1.03c853714cc73p-9;
 	const auto a = MakeSuperellipse(aa, ab, an, am);
 	const auto b = MakeSuperellipse(br, br, 17.0, 17.0);
+	const ref::RefShape ra = ref::RefShape::Super(aa, ab, an, am), rb = ref::RefShape::Super(br, br, 17.0L, 17.0L);
 	const Pose pa(Vec2(0x1.05d8bd7a50564p-8, 0x1.3ab3354e45e66p-7), -0x1.8aabcf12a236cp+0);
 	const Pose pb(Vec2(0x1.f81f26e9f2ddcp-9, 0x1.3a16cf1d67c25p-7), -0x1.0f38c1fe89c76p+1);
-	const ref::CommonLevelResult built = ref::CommonLevelRef(ref::RefShape::Super(aa, ab, an, am), ref::Of(pa),
-	                                                         ref::RefShape::Super(br, br, 17.0L, 17.0L), ref::Of(pb));
+	const ref::CommonLevelResult built = ref::CommonLevelRef(ra, ref::Of(pa), rb, ref::Of(pb));
+	const LevelResult grid = SolveCommonLevelGrid(*a, pa, *b, pb);
+	REQUIRE(grid.Ok());
+	CHECK(double(std::fabs(grid.level - built.level) / built.level) < 1e-8);
+	const V X = ref::FromVec(grid.point);
+	const V na = ref::Unit(ref::WorldDeriv(ra, ref::Of(pa), X).grad), nb = ref::Unit(ref::WorldDeriv(rb, ref::Of(pb), X).grad);
+	CHECK(double(ref::Len(na + nb)) > 0.5);
 	const LevelResult l = SolveCommonLevel(*a, pa, *b, pb);
-	REQUIRE(l.Ok());
-	CHECK(l.status == SolveStatus::convergedAfterFallback);
-	MESSAGE("level " << l.level << " reference " << double(built.level));
-	CHECK(double(std::fabs(l.level - built.level) / built.level) < 1e-8);
+	CHECK(!l.Ok());
+	CHECK(std::string(l.failure).find("grid: stopped short") == 0);
 	const ContactResult c = ComputeContact(*a, pa, *b, pb);
 	REQUIRE(c.Ok());
 	CHECK(c.touching);
+	// The contact's own Newton (SuperellipsePairContact) converges here, to the level within
+	// 2e-13; at its point too the normals are 1.1 rad apart (A's is 2e-16 thick at this level,
+	// the point's rounding 1e-18): its normal is not held to the standard yet.
+	CHECK(c.method == SolveMethod::newton);
+	CHECK(double(std::fabs(c.level - built.level) / built.level) < 1e-9);
 }
 
 TEST_CASE("stress: a small heart beside a long plank gets the side that measures its gap")
@@ -500,4 +513,80 @@ TEST_CASE("stress: needle pairs and their neighbours converge to the solution, n
 			check("contact", contact.Ok(), contact.level, contact.normal);
 		}
 	CHECK(neighbours == 20);
+}
+
+TEST_CASE("stress: the grid's common level after a min-max that stops short is a solution or a failure")
+{
+	// From b2a_stress --seed 1: needles crossing deep inside each other (levels 1e-30 to 1e-13),
+	// where Newton and the min–max stop short and the grid's fixed point, which stops at its
+	// samples' and bracket's tolerances, was reported converged: 0.5 off in level (10159), 1e-9 and
+	// 2e-4 rad off (26759), 2.5e-7 off (858905), 0.7 off (897286), its normal reversed (298732).
+	// Each, and two neighbours (B turned by 1e-9 and 1e-7 rad): a converged level is held to the
+	// standard, the conditions checked in long double at its point (levels equal to 1e-9, A's
+	// gradient opposed to B's to 1e-6 rad, A's normal its gradient's direction to 1e-6 rad) and
+	// the level against the dense long-double reference (CommonLevelRef) to 1e-9; a failure
+	// names its reason, and the contact still separates the overlapping pair.
+	struct Case
+	{
+		int id;
+		double aa, ab, an, am;
+		Pose pa;
+		double ba, bb, bn, bm;
+		Pose pb;
+	};
+	const Case cases[] = {
+		{10159, 0x1.68f5c8f86c328p-1, 0x1.6080064299a95p+9, 0x1p+1, 0x1.2p+4, Pose(Vec2(0x1.8e901e4f1d829p+9, -0x1.561713552e461p+8), -0x1.f517ca63d0348p-1), 0x1.12a375acc877fp+9, 0x1.363fdea127f9p-1, 0x1.4p+4, 0x1.4p+4, Pose(Vec2(0x1.8e92bbc6c4865p+9, -0x1.6507cc254ac2cp+8), 0x1.599bffb4bbb5cp+1)},
+		{26759, 0x1.0f223c7abe6a6p-3, 0x1.330b6314454d6p-13, 0x1.4p+4, 0x1.4p+4, Pose(Vec2(-0x1.71496f561f1b9p-3, -0x1.dc3ca32dce29fp-9), -0x1.4503df09215f9p+1), 0x1.8d0f4e5a48ea2p-12, 0x1.be4b3a062cc21p-5, 0x1.48192e73f25ap+1, 0x1.d6bf964ebb708p+3, Pose(Vec2(-0x1.62956d9af85aap-3, 0x1.cab1573c1816ap-10), -0x1.dd080dd5d3bf8p-2)},
+		{221413, 0x1.160e5b7aa81f8p+4, 0x1.11f7b06a72494p-5, 0x1.186ca56d4692ap+3, 0x1.1eb3826f9efa2p+2, Pose(Vec2(0x1.36d4bd272422cp+1, 0x1.20ce53fa91dap+2), 0x1.4d88ab09ba7a8p+1), 0x1.8d2828b129e3bp-8, 0x1.05121a7de863dp+1, 0x1.545718b5b9382p+1, 0x1.01599e862bcc4p+4, Pose(Vec2(0x1.53b5e8f0500afp+1, 0x1.205e976f8aea4p+2), 0x1.d1409628b9ca8p-2)},
+		{298732, 0x1.026e3cee8f67ep-8, 0x1.2e589b0c33e0bp-17, 0x1.4p+4, 0x1p+1, Pose(Vec2(-0x1.1ab134deffec6p-8, 0x1.1c610608c665bp-8), 0x1.f393393aed58cp+0), 0x1.797c983f22a9fp-15, 0x1.81208028e255ap-6, 0x1.2p+4, 0x1.2p+4, Pose(Vec2(-0x1.36ab245d618d6p-8, 0x1.e3083dc9fee61p-9), 0x1.e13452515eb3p+0)},
+		{724986, 0x1.f1f4103409b11p-4, 0x1.2906f05fdec9ep+6, 0x1.8582149abb835p+2, 0x1.d0f578e3cc12p+3, Pose(Vec2(-0x1.18a66648d8b14p+8, 0x1.9bd1c070a919ep+7), 0x1.4019b09895824p+0), 0x1.fa936c8d5df32p-4, 0x1.b852db670e1ep+6, 0x1.8p+1, 0x1.cp+3, Pose(Vec2(-0x1.14211440734fdp+8, 0x1.9f9d4186b3ad1p+7), -0x1.f2f917a588aep-4)},
+		{858905, 0x1.1a65253643c83p-9, 0x1.212c2e4c0c109p-19, 0x1.4p+4, 0x1.4p+4, Pose(Vec2(0x1.07929f72e6f85p-9, -0x1.4a22af27ab061p-8), 0x1.5400f3edb625ep+1), 0x1.0ce9b6c41a69ep-7, 0x1.135dea41a4437p-17, 0x1.ecddae694a90bp+3, 0x1.54f3e3b1138e6p+1, Pose(Vec2(0x1.fbd2f4a785e83p-10, -0x1.44be00b7b91b1p-8), 0x1.0f48132829e14p-1)},
+		{897286, 0x1.0624dd2f1a9fcp-10, 0x1.fd4732bd01431p-20, 0x1.1d18d45bcc6bbp+4, 0x1.678af1072b7d6p+2, Pose(Vec2(-0x1.c8d1a694fbef2p-11, 0x1.db2dbeb585e95p-9), -0x1.e392851b7146ep+0), 0x1.88d35329441afp-17, 0x1.6809c77de6b4p-8, 0x1.030d5470837ccp+1, 0x1.dd4a3673cf757p+3, Pose(Vec2(-0x1.86a73698d8c92p-11, 0x1.d7c2a6b4c07dp-9), -0x1.157e0407d03b4p+1)},
+	};
+	int converged = 0, failed = 0;
+	for (const Case& k : cases)
+	{
+		const ShapePtr a = MakeSuperellipse(k.aa, k.ab, k.an, k.am), b = MakeSuperellipse(k.ba, k.bb, k.bn, k.bm);
+		const ref::RefShape ra = ref::RefShape::Super(k.aa, k.ab, k.an, k.am), rb = ref::RefShape::Super(k.ba, k.bb, k.bn, k.bm);
+		for (const double turn : {0.0, 1e-9, 1e-7})
+		{
+			const Pose pb(k.pb.p, k.pb.q.Angle() + turn);
+			CAPTURE(k.id);
+			CAPTURE(turn);
+			const LevelResult r = SolveCommonLevel(*a, k.pa, *b, pb);
+			if (!r.Ok())
+			{
+				++failed;
+				CHECK(std::string(r.failure).size() > 0);
+				const ContactResult c = ComputeContact(*a, k.pa, *b, pb);
+				REQUIRE(c.Ok());
+				CHECK(c.touching);
+				continue;
+			}
+			++converged;
+			const ref::RefPose qa = ref::Of(k.pa), qb = ref::Of(pb);
+			const V X = ref::FromVec(r.point);
+			const ref::Deriv da = ref::WorldDeriv(ra, qa, X), db = ref::WorldDeriv(rb, qb, X);
+			const V na = ref::Unit(da.grad), nb = ref::Unit(db.grad);
+			// Beyond what the rounding of the point's coordinates alone explains (eps·reach
+			// moves the levels by |∇λ| times that, the normals by the level curves' curvature
+			// times that: at levels of 1e-18 needles' levels are ill-conditioned), as the
+			// stress run's standard.
+			const LD delta = LD(std::numeric_limits<double>::epsilon()) *
+			                 std::max({ref::Len(X), ref::Len(ref::FromVec(k.pa.p)), ref::Len(ref::FromVec(pb.p))});
+			auto curvature = [](const ref::Deriv& d) {
+				const V t{-d.grad.y, d.grad.x};
+				return std::fabs(t.x * (d.hxx * t.x + d.hxy * t.y) + t.y * (d.hxy * t.x + d.hyy * t.y)) / std::pow(ref::Len(d.grad), 3);
+			};
+			const double levelFloor = double(delta * (ref::Len(da.grad) + ref::Len(db.grad)) / da.value);
+			const double angleFloor = double(delta * (curvature(da) + curvature(db)));
+			CHECK(double(std::fabs(da.value - db.value) / da.value) < std::max(1e-9, 1e2 * levelFloor));
+			CHECK(double(ref::Len(na + nb)) < std::max(1e-6, 1e2 * angleFloor));
+			CHECK(double(ref::Len(na - ref::FromVec(r.normal))) < 1e-6);
+			const ref::CommonLevelResult want = ref::CommonLevelRef(ra, qa, rb, qb);
+			CHECK(double(std::fabs(LD(r.level) - want.level) / want.level) < 1e-9);
+		}
+	}
+	MESSAGE("converged ", converged, ", failed ", failed);
+	CHECK(converged >= 3);
 }

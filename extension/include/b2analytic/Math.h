@@ -66,6 +66,20 @@ inline Vec2 Normalize(Vec2 a)
 	return a / len;
 }
 
+/// Unit vector at polar angle theta, exactly on an axis where theta is the double nearest a
+/// multiple of π/2 (cos(π/2) in double is 6e-17, not 0: a shape whose level grows like
+/// |x|^{2/3} across an axis, the heart at its tip and notch, turns that into 1e-11 of its size).
+/// Components below 2e-16 (the rounding of such an angle) are taken as 0.
+inline Vec2 PolarDirection(double theta)
+{
+	double c = std::cos(theta), s = std::sin(theta);
+	if (std::fabs(c) < 2e-16)
+		c = 0.0, s = s > 0.0 ? 1.0 : -1.0;
+	else if (std::fabs(s) < 2e-16)
+		s = 0.0, c = c > 0.0 ? 1.0 : -1.0;
+	return {c, s};
+}
+
 /// Distance from the point p to the segment [a, b].
 inline double DistanceToSegment(Vec2 p, Vec2 a, Vec2 b)
 {

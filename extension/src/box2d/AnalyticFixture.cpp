@@ -281,9 +281,18 @@ std::vector<Vec2> ProxyCore(const Shape& shape, bool& insetFits)
 	points.erase(std::unique(points.begin(), points.end(), SamePoint), points.end());
 	while (points.size() > 1 && SamePoint(points.back(), points.front()))
 		points.pop_back();
-	if (points.size() < 3)
+	// The proxy's vertices are float: a needle thinner than float resolves (1e-237 wide, its
+	// samples now reaching its tips) is a segment there, which spans no area either.
+	double twiceArea = 0.0;
+	for (size_t i = 0; i < points.size(); ++i)
+	{
+		const Vec2 p = points[i], q = points[(i + 1) % points.size()];
+		twiceArea += Cross(Vec2(double(float(p.x)), double(float(p.y))), Vec2(double(float(q.x)), double(float(q.y))));
+	}
+	if (points.size() < 3 || !(twiceArea > 0.0))
 		throw InvalidParameter("CreateAnalyticFixture", "shape",
-		                       "has surface samples that span no area (the proxy polygon needs 3 distinct vertices), vertices",
+		                       "has surface samples that span no area in float (the proxy polygon needs 3 distinct vertices "
+		                       "around an area), vertices",
 		                       double(points.size()));
 	return points;
 }

@@ -138,43 +138,8 @@ LevelResult SolveCommonLevelMinMax(const Shape& a, const Pose& pa, const Shape& 
 	g(root.x); // leave xi at the minimiser of the final ν
 	result.iterations = root.iterations;
 
-	// Polish with Newton from the min–max answer: it is inside Newton's basin now. Newton's answer
-	// is taken where it stayed within 1e-3 of the pair's size, or where its level is at most
-	// max(λA, λB) at the min–max point (with 1e-3 for the rounding of levels like 1e12). Any
-	// point's larger level bounds the common level from above, and Newton's converged point
-	// (equal levels, opposed gradients) is the common level's point itself, unique for convex
-	// shapes. Where Brent's bracket closed on a flat inner minimum (a needle 1e6 of its size from
-	// a giant: the point 6e5 sizes off, in b2a_stress), the bound holds and the distance does not.
-	const GaugeValue A = f.Eval(f.a, xi, false);
-	LevelResult polished = RunNewton(f, xi, root.x, options);
-	const double bound = A.finite ? std::max(A.lambda, f.Eval(f.b, xi, false).lambda) : std::nan(""); // NaN: no bound
-	if (polished.Ok() && (Length(f.Xi(polished.point) - xi) < 1e-3 || polished.level <= bound * (1.0 + 1e-3)))
-	{
-		polished.method = SolveMethod::minMax;
-		polished.iterations += result.iterations;
-		return polished;
-	}
-	if (!A.finite)
-	{
-		result.failure = "min-max: non-finite level at the answer";
-		return result;
-	}
-	// Newton's polish failed: the min–max point itself is the answer only where it solves the
-	// conditions to the same standard (ConditionsHold; the inner minimisation and Brent's
-	// bracket each stop at their own tolerances, which a needle's levels do not see).
-	const GaugeValue a2 = f.Eval(f.a, xi, true), b2 = f.Eval(f.b, xi, true);
-	const double reach = std::max({Length(f.World(xi)), Length(pa.p), Length(pb.p)});
-	if (!ConditionsHold(a2.psi, b2.psi, a2.grad, b2.grad, a2.hess, b2.hess, std::numeric_limits<double>::epsilon() * reach / f.scale, f.power))
-	{
-		result.failure = "min-max: stopped short of a solution (its levels or normals disagree beyond rounding)";
-		return result;
-	}
-	result.status = SolveStatus::converged;
-	result.level = A.lambda;
-	result.point = f.World(xi);
-	result.normal = Normalize(A.grad);
-	result.multiplier = std::exp(root.x);
-	return result;
+	return PolishCommonLevel(f, xi, root.x, options, result, "min-max: non-finite level at the answer",
+	                         "min-max: stopped short of a solution (its levels or normals disagree beyond rounding)");
 }
 
 } // namespace b2a

@@ -41,7 +41,7 @@ struct SurfaceWalk
 	double Slope(double theta) const
 	{
 		++evaluations;
-		const Vec2 u(std::cos(theta), std::sin(theta)), up(-u.y, u.x);
+		const Vec2 u = PolarDirection(theta), up(-u.y, u.x);
 		const double r = b.RadiusAt(u, levelB);
 		const Vec2 X = r * u;
 		const Vec2 gB = b.Gradient(X);
@@ -169,6 +169,43 @@ bool MeetsCornerRay(const Shape& s, Vec2 pl, Vec2 ph)
 	return false;
 }
 
+// A bracket of the crossing of B's curve with the ray along u nearest the chord pl–ph's, where
+// the chord's bracket (its projections ± its length) holds none: B thinner than the chord (a
+// plank 0.26 thick under a chord 0.65 long) has the ray enter and leave it inside, both ends
+// outside. From the chord's crossing sc, steps of a quarter of the chord, shrinking by four,
+// to the side where g changes sign.
+template <typename G>
+bool BracketNearChord(const G& g, Vec2 u, Vec2 pl, Vec2 ph, double margin, double& s0, double& s1, double& g0, double& g1)
+{
+	const double cl = Cross(u, pl), ch = Cross(u, ph);
+	if (!(cl != ch))
+		return false;
+	const double sc = Dot(u, pl + (cl / (cl - ch)) * (ph - pl));
+	const double gc = g(sc);
+	if (gc == 0.0)
+	{
+		s0 = s1 = sc;
+		g0 = g1 = 0.0;
+		return true;
+	}
+	for (double d = 0.25 * margin; d > 1e-6 * margin; d *= 0.25)
+	{
+		const double below = std::max(0.0, sc - d), gb = g(below);
+		if (gb * gc <= 0.0)
+		{
+			s0 = below, g0 = gb, s1 = sc, g1 = gc;
+			return true;
+		}
+		const double ga = g(sc + d);
+		if (ga * gc <= 0.0)
+		{
+			s0 = sc, g0 = gc, s1 = sc + d, g1 = ga;
+			return true;
+		}
+	}
+	return false;
+}
+
 // Where B's level-LB curve crosses the ray of one of A's corners (A's body frame) between the
 // neighbours pl and ph of a sample. Along that ray λA is not differentiable: at the heart's tip
 // it runs in a V-shaped valley, λA ≈ smooth + c|s|^{2/3} across it, so the crossing is a local
@@ -182,14 +219,14 @@ bool CornerRayCrossing(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double& value,
 		if (!SegmentMeetsRay(u, pl, ph))
 			continue;
 		const double margin = Distance(pl, ph);
-		const double s0 = std::max(0.0, std::min(Dot(u, pl), Dot(u, ph)) - margin);
-		const double s1 = std::max(Dot(u, pl), Dot(u, ph)) + margin;
+		double s0 = std::max(0.0, std::min(Dot(u, pl), Dot(u, ph)) - margin);
+		double s1 = std::max(Dot(u, pl), Dot(u, ph)) + margin;
 		auto g = [&](double s) {
 			++walk.evaluations;
 			return walk.b.Level(ToBody(walk.bInA, s * u)) - walk.levelB;
 		};
-		const double g0 = g(s0), g1 = g(s1);
-		if (!(g0 * g1 <= 0.0))
+		double g0 = g(s0), g1 = g(s1);
+		if (!(g0 * g1 <= 0.0) && !BracketNearChord(g, u, pl, ph, margin, s0, s1, g0, g1))
 			continue;
 		const ScalarResult r = LevelRootAlongLine(walk.b, walk.bInA, Vec2(), u, walk.levelB, s0, s1, g0, g1);
 		walk.evaluations += r.iterations;

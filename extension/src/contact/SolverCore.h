@@ -285,6 +285,18 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 
 /// Newton–Raphson on the common level from (ξ, m = log μ) in a PairFrame; `level` is λA there.
 LevelResult RunNewton(const PairFrame& frame, Vec2 xi, double m, const SolverOptions& options, LevelSlide* slide = nullptr);
+/// A fallback's candidate point ξ (with m = log μ) polished by RunNewton, whose answer is taken
+/// where it stays near the candidate or below the candidate's larger level; else the candidate
+/// itself where it solves the conditions (ConditionsHold), else `result` failed with
+/// `stoppedShort` (`nonFinite` where λA is not finite there). `result` carries the method
+/// and the iterations spent before (CommonLevelPolish.cpp).
+LevelResult PolishCommonLevel(const PairFrame& frame, Vec2 xi, double m, const SolverOptions& options, LevelResult result,
+                              const char* nonFinite, const char* stoppedShort);
+/// The grid's common level (SolveCommonLevelGrid), which stops at its samples' and bracket's
+/// tolerances, polished or held to the conditions as PolishCommonLevel does: a converged answer
+/// solves them, else it fails with its reason.
+LevelResult CheckGridCommonLevel(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                                 const LevelResult& grid);
 /// SolveCommonLevelNewton, warm-started with WarmStartPoint and filling `slide` (when given) for
 /// RecordSlide.
 LevelResult SolveCommonLevelNewton(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,

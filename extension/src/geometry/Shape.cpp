@@ -80,7 +80,7 @@ void Shape::AddCorner(double theta)
 	std::sort(m_corners.begin(), m_corners.end());
 	m_cornerDirections.clear();
 	for (double c : m_corners)
-		m_cornerDirections.emplace_back(std::cos(c), std::sin(c));
+		m_cornerDirections.push_back(PolarDirection(c));
 	m_serial = g_nextSerial.fetch_add(1, std::memory_order_relaxed); // the dense pass depends on the corners
 }
 
@@ -140,7 +140,7 @@ double Shape::RadiusAt(Vec2 u, double level) const
 
 Vec2 Shape::SurfacePoint(double theta, double level) const
 {
-	const Vec2 u(std::cos(theta), std::sin(theta));
+	const Vec2 u = PolarDirection(theta);
 	return RadiusAt(u, level) * u;
 }
 
