@@ -36,8 +36,9 @@ ShapePtr MixedParticle(double a, double b, double kind, double exponent)
 	// 2 % hearts, 30 % circles, 30 % ellipses, 38 % superellipses with n in [2.5, 5.5).
 	if (kind < 0.02)
 	{
-		// A heart as wide as the others are long: its size α scales its extents as √α, and the
-		// heart of α = 1 is 2.278 wide and 2.237 tall (its tight box).
+		// A heart about as wide as the others are long: the heart of α = 1 is 2.278 wide and
+		// 2.237 tall (its tight box), and near α = 1 its extents grow about as √α (the equation
+		// is not homogeneous, so its outline changes a little with α: within 0.5 % of 2a here).
 		const double s = 2.0 * a / 2.278;
 		return MakeHeart(s * s);
 	}

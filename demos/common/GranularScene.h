@@ -51,7 +51,7 @@ struct GranularConfig
 };
 
 /// One particle of the mixed scenes (GranularConfig::mixed) with semi-axes a ≥ b, from two
-/// uniform draws in [0, 1): `kind` picks the family (2 % hearts as wide as 2a, 30 % circles of
+/// uniform draws in [0, 1): `kind` picks the family (2 % hearts about 2a wide, 30 % circles of
 /// radius (a + b)/2, 30 % ellipses a × b, 38 % superellipses a × b), `exponent` the
 /// superellipse's n = m in [2.5, 5.5).
 ShapePtr MixedParticle(double a, double b, double kind, double exponent);
