@@ -1,4 +1,4 @@
-// b2analytic: the proxy b2Shape of analytic fixtures: exact AABB, mass, point test and ray cast.
+// b2analytic: the proxy b2Shape of analytic fixtures: enclosing AABB, mass, point test, ray cast.
 #include "box2d/AnalyticProxyShape.h"
 
 #include "b2analytic/SurfaceQueries.h"
