@@ -46,6 +46,10 @@ velocity and 3 position iterations, sleeping off), each at every particle count:
            drop height and speeds are the same at every N (in the packing and the hopper
            they grow as sqrt(N)): the scene for how the cost per particle-step grows with N.
            Measured as the packing is, while the layer settles.
+  mixed    the packing's box and schedule with mixed particles of the same sizes
+           (MixedParticle): 38 % superellipses with exponents n = m drawn from
+           [2.5, 5.5), 30 % ellipses, 30 % circles, 2 % hearts; the hearts' 8-gons are
+           their convex hulls'.
 Each scene runs twice from the same lattice (same sizes, orientations and places): with
 analytic fixtures, and with plain Box2D b2PolygonShapes of 8 vertices on the same surfaces
 (MakeInscribedPolygon: the outline inscribed; same density, friction and restitution; Box2D's
@@ -136,13 +140,19 @@ GranularConfig LayerConfig(int count)
 }
 
 /// The scenes --scenes may name, and the list as its messages print it.
-const std::vector<std::string> kSceneNames = {"packing", "hopper", "layer"};
+const std::vector<std::string> kSceneNames = {"packing", "hopper", "layer", "mixed"};
 
 /// The scene's configuration at a particle count.
 GranularConfig SceneConfig(const std::string& scene, int count)
 {
 	if (scene == "hopper")
 		return HopperConfig(count);
+	if (scene == "mixed")
+	{
+		GranularConfig c = PackingConfig(count);
+		c.mixed = true;
+		return c;
+	}
 	return scene == "layer" ? LayerConfig(count) : PackingConfig(count);
 }
 
@@ -186,16 +196,19 @@ bool Finite(const b2Body& b)
 	       std::isfinite(b.GetAngularVelocity());
 }
 
-/// The particle's fixture is what the variant says: one analytic fixture, or one plain 8-gon.
-bool FixtureMatches(const b2Body& b, bool polygon)
+/// The particle's fixture is what the variant says: one analytic fixture, or one plain 8-gon
+/// (`hulls`: or fewer vertices, the convex hull of a non-convex particle's 8 points).
+bool FixtureMatches(const b2Body& b, bool polygon, bool hulls)
 {
 	const b2Fixture* f = b.GetFixtureList();
 	if (!f || f->GetNext())
 		return false;
 	if (!polygon)
 		return GetAnalyticShape(f) != nullptr;
-	return !GetAnalyticShape(f) && f->GetType() == b2Shape::e_polygon &&
-	       static_cast<const b2PolygonShape*>(f->GetShape())->m_count == kPolygonVertices;
+	if (GetAnalyticShape(f) || f->GetType() != b2Shape::e_polygon)
+		return false;
+	const int32 count = static_cast<const b2PolygonShape*>(f->GetShape())->m_count;
+	return count == kPolygonVertices || (hulls && count >= 3 && count < kPolygonVertices);
 }
 
 /// Every particle of the world: finite, inside the container (or falling through the outlet),
@@ -209,7 +222,7 @@ void CheckParticles(GranularScene& scene, Run& run)
 		if (b->GetType() != b2_dynamicBody)
 			continue;
 		++inBox;
-		run.fixturesOk = run.fixturesOk && FixtureMatches(*b, c.polygonVertices > 0);
+		run.fixturesOk = run.fixturesOk && FixtureMatches(*b, c.polygonVertices > 0, c.mixed);
 		if (!Finite(*b))
 		{
 			++run.nonFinite;
@@ -310,7 +323,7 @@ Json PolygonCheck(const GranularConfig& config)
 		polygon.ComputeMass(&mass, 1.0f);
 		areaRatio += mass.mass / shape.Mass().area;
 		++shapes;
-		if (polygon.m_count != kPolygonVertices)
+		if (polygon.m_count != kPolygonVertices && shape.IsConvex())
 			worstRadial = 1.0 / 0.0; // Box2D welded vertices: not the 8-gon we asked for
 	}
 	return {{"vertices", kPolygonVertices},
@@ -384,7 +397,7 @@ int main(int argc, char** argv)
 	cli.Add("--counts", givenCounts, {1000, 4000, 16000}, {250}, "N,N,...",
 	        "particle counts (default 1000,4000,16000; quick: the smallest given,\nelse 250)", WholeNumber(10, 1e6));
 	cli.Add("--steps", windowSteps, 200, 30, "N", "steps in the timed window (default 200, quick 30)", WholeNumber(1, 100000));
-	cli.Add("--scenes", sceneNames, "S,S", "scenes to run: packing, hopper, layer (default packing,hopper)", OneOf(kSceneNames));
+	cli.Add("--scenes", sceneNames, "S,S", "scenes to run: packing, hopper, layer, mixed (default packing,hopper)", OneOf(kSceneNames));
 	cli.Add("--threads", threadCounts, "N,N",
 	        "also run the analytic variant with its contacts computed on N threads\n"
 	        "before each step (b2a::PrepareContacts; variant analytic_<N>threads),\n"
@@ -427,7 +440,9 @@ int main(int argc, char** argv)
 			run.count = count;
 			run.config = SceneConfig(name, count);
 			run.config.seed = opt.seed;
-			run.particle = name == "hopper" ? "ellipses 2x0.66 mm" : "superellipses n=4";
+			run.particle = name == "hopper" ? "ellipses 2x0.66 mm"
+			               : name == "mixed" ? "mixed shapes"
+			                                 : "superellipses n=4";
 			Schedule(run, GranularScene(run.config).PileHeight(), windowSteps);
 			run.variant = "analytic";
 			runs.push_back(run);
@@ -561,7 +576,8 @@ int main(int argc, char** argv)
 	        "broadphase). packing: superellipses n = 4 settling in a closed box 2√N mm wide; hopper: 2 × 0.66 mm "
 	        "ellipses discharging through an outlet of 0.3 of a box 80√(N/4000) mm wide; layer: the packing's "
 	        "superellipses settling in a layer " + std::to_string(kLayerRows) + " lattice rows deep at every N (box 2.3·N/" +
-	        std::to_string(kLayerRows) + " mm wide). `8-gon` rows are the same "
+	        std::to_string(kLayerRows) + " mm wide); mixed: the packing's box with 38 % superellipses of n = m in "
+	        "[2.5, 5.5), 30 % ellipses, 30 % circles and 2 % hearts. `8-gon` rows are the same "
 	        "scenes with plain Box2D polygons of 8 vertices on the same surfaces. `× 8-gon`: the analytic time over "
 	        "the 8-gons'. CPU ms: the median CPU time of the stepping thread (the profile is wall-clock time, which on "
 	        "a shared machine includes other processes' turns). growth: µs per particle-step over that at the smallest "

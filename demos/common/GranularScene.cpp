@@ -31,6 +31,25 @@ struct GranularScene::FloorMeter : b2ContactListener
 	}
 };
 
+ShapePtr MixedParticle(double a, double b, double kind, double exponent)
+{
+	// 2 % hearts, 30 % circles, 30 % ellipses, 38 % superellipses with n in [2.5, 5.5).
+	if (kind < 0.02)
+	{
+		// A heart about as wide as the others are long: the heart of α = 1 is 2.278 wide and
+		// 2.237 tall (its tight box), and near α = 1 its extents grow about as √α (the equation
+		// is not homogeneous, so its outline changes a little with α: within 0.5 % of 2a here).
+		const double s = 2.0 * a / 2.278;
+		return MakeHeart(s * s);
+	}
+	if (kind < 0.32)
+		return MakeCircle(0.5 * (a + b));
+	if (kind < 0.62)
+		return MakeEllipse(a, b);
+	const double n = 2.5 + 3.0 * exponent;
+	return MakeSuperellipse(a, b, n, n);
+}
+
 GranularScene::GranularScene(const GranularConfig& c) : m_config(c)
 {
 	BuildContainer(true);
@@ -43,7 +62,8 @@ GranularScene::GranularScene(const GranularConfig& c) : m_config(c)
 	{
 		const double s = 1.0 + c.sizeSpread * (2.0 * U(rng) - 1.0);
 		const double a = a0 * s, b = a / c.aspect;
-		ShapePtr shape = c.exponent != 2.0 ? ShapePtr(MakeSuperellipse(a, b, c.exponent, c.exponent))
+		ShapePtr shape = c.mixed               ? MixedParticle(a, b, U(rng), U(rng))
+		                 : c.exponent != 2.0 ? ShapePtr(MakeSuperellipse(a, b, c.exponent, c.exponent))
 		                 : c.aspect == 1.0  ? ShapePtr(MakeCircle(a))
 		                                    : ShapePtr(MakeEllipse(a, b));
 		const int row = i / perRow, col = i % perRow;

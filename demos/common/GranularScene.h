@@ -45,7 +45,16 @@ struct GranularConfig
 	/// Threads that compute the analytic contacts before each step (b2a::PrepareContacts);
 	/// 1: b2World::Step alone. Any count steps the scene bit-identically.
 	int threads = 1;
+	/// Mixed particles instead of one family (MixedParticle): superellipses of non-integer
+	/// exponents, ellipses, circles and a few hearts, `width` and `aspect` as above.
+	bool mixed = false;
 };
+
+/// One particle of the mixed scenes (GranularConfig::mixed) with semi-axes a ≥ b, from two
+/// uniform draws in [0, 1): `kind` picks the family (2 % hearts about 2a wide, 30 % circles of
+/// radius (a + b)/2, 30 % ellipses a × b, 38 % superellipses a × b), `exponent` the
+/// superellipse's n = m in [2.5, 5.5).
+ShapePtr MixedParticle(double a, double b, double kind, double exponent);
 
 /// The Beverloo demo's particles (after the paper's section 4.3): ellipses of 2 × 0.66 mm, sizes
 /// within ±5 %, friction 0.5 on particles, floor and walls; the container is the caller's.

@@ -1,9 +1,14 @@
 // b2analytic tests: creating analytic fixtures, their mass data, queries, drawing and lifetime.
 #include "SceneSupport.h"
 
+#include "b2analytic/Box2DConversions.h"
+
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <random>
 #include <string>
+#include <vector>
 
 using namespace b2a;
 using namespace b2a::test;
@@ -196,6 +201,76 @@ TEST_CASE("ray casts and point tests answer for the true shape")
 	CHECK(box.upperBound.y >= tight.upper.y);
 	CHECK(box.lowerBound.x == doctest::Approx(tight.lower.x).epsilon(1e-6));
 	CHECK(box.upperBound.y == doctest::Approx(tight.upper.y).epsilon(1e-6));
+}
+
+TEST_CASE("the broad phase's box holds the shape and stays within 3 % of Box2D's margin of tight at every pose")
+{
+	// ComputeAABB answers from the exact box at an anchor pose, moved and widened by the turn
+	// since (up to 3 % of b2_aabbExtension), and recomputes past that. Along random walks of
+	// small steps (the anchored path) with jumps (recomputations), every box holds 1024 points of
+	// the surface at the pose and the exact tight box, and lies within twice that of it.
+	const double reach = 0.03 * double(b2_aabbExtension);
+	const std::vector<std::pair<const char*, ShapePtr>> shapes = {
+		{"ellipse", MakeEllipse(1.0, 0.33)}, {"superellipse n=4", MakeSuperellipse(1.0, 0.625, 4.0, 4.0)},
+		{"superellipse n=2.7", MakeSuperellipse(0.8, 0.5, 2.7, 2.7)}, {"circle", MakeCircle(0.4)}, {"heart", MakeHeart(0.2)}};
+	std::mt19937 random(42);
+	std::uniform_real_distribution<double> unit(-1.0, 1.0);
+	for (const auto& [name, shape] : shapes)
+	{
+		CAPTURE(name);
+		b2World world(b2Vec2(0.0f, 0.0f));
+		b2BodyDef bd;
+		bd.type = b2_dynamicBody;
+		b2Body* body = world.CreateBody(&bd);
+		b2FixtureDef fd;
+		AnalyticFixtureDef ad;
+		ad.shape = shape;
+		ad.local = Pose(Vec2(0.3, -0.2), 0.7); // off the body origin: the turn moves the shape too
+		const b2Shape* proxy = CreateAnalyticFixture(body, fd, ad)->GetShape();
+		const double level = shape->SurfaceLevel();
+		double x = 0.0, y = 0.0, angle = 0.0, worstLoose = 0.0;
+		int anchored = 0, exact = 0, outside = 0;
+		for (int step = 0; step < 2000; ++step)
+		{
+			if (step % 500 == 0) // a jump: past the anchor's reach
+			{
+				x = 50.0 * unit(random);
+				y = 50.0 * unit(random);
+				angle = 3.0 * unit(random);
+			}
+			else
+			{
+				x += 0.01 * unit(random);
+				y += 0.01 * unit(random);
+				angle += 0.001 * unit(random);
+			}
+			const b2Transform xf{b2Vec2(float(x), float(y)), b2Rot(float(angle))};
+			b2AABB box;
+			proxy->ComputeAABB(&box, xf, 0);
+			const Pose body2 = ToPose(xf);
+			const Pose pose(ToWorld(body2, ad.local.p), Mul(body2.q, ad.local.q));
+			const Box tight = shape->ComputeAABB(pose);
+			outside += box.lowerBound.x <= tight.lower.x && box.lowerBound.y <= tight.lower.y && box.upperBound.x >= tight.upper.x &&
+			                   box.upperBound.y >= tight.upper.y
+			               ? 0
+			               : 1;
+			for (int k = 0; k < 1024; ++k)
+			{
+				const Vec2 p = ToWorld(pose, shape->SurfacePoint(-kPi + 2.0 * kPi * k / 1024.0, level));
+				outside += p.x >= box.lowerBound.x && p.x <= box.upperBound.x && p.y >= box.lowerBound.y && p.y <= box.upperBound.y ? 0 : 1;
+			}
+			const double loose = std::max({tight.lower.x - box.lowerBound.x, tight.lower.y - box.lowerBound.y,
+			                               box.upperBound.x - tight.upper.x, box.upperBound.y - tight.upper.y});
+			worstLoose = std::max(worstLoose, loose);
+			// Float rounding of a box 50 units from the origin: a few 1e-6.
+			(loose > 1e-5 ? anchored : exact) += 1;
+		}
+		CHECK(outside == 0);
+		CHECK(worstLoose <= 2.0 * reach + 1e-5);
+		CHECK(worstLoose >= 0.5 * reach); // the anchored path was taken, and loosened as far as it may
+		CHECK(anchored > 1000);
+		CHECK(exact > 5);
+	}
 }
 
 TEST_CASE("debug drawing shows the true outlines, hearts included, through the user's b2Draw")

@@ -16,6 +16,38 @@
 #include <sys/wait.h>
 
 #include "CsvTable.h"
+#include "common/GranularScene.h"
+
+#include "b2analytic/HeartShape.h"
+#include "b2analytic/SuperellipseShape.h"
+
+TEST_CASE("MixedParticle: the mixed scenes' families, sizes and exponents from its two draws")
+{
+	using namespace b2a;
+	const double a = 1.1, b = 0.6875;
+	// 2 % hearts about 2a wide (the heart of alpha = 1 is 2.278 wide; the outline is not a pure
+	// scaling in alpha, so near alpha = 1 the width is √alpha times that to within half a percent).
+	const ShapePtr heart = demo::MixedParticle(a, b, 0.01, 0.5);
+	REQUIRE(dynamic_cast<const HeartShape*>(heart.get()));
+	const Box hb = heart->ComputeAABB(Pose());
+	CHECK(hb.upper.x - hb.lower.x == doctest::Approx(2.0 * a).epsilon(5e-3));
+	// 30 % circles of radius (a + b)/2, 30 % ellipses a x b, the rest superellipses with n = m
+	// = 2.5 + 3 u.
+	const auto circle = std::dynamic_pointer_cast<const SuperellipseShape>(demo::MixedParticle(a, b, 0.2, 0.5));
+	REQUIRE(circle);
+	CHECK(circle->A() == doctest::Approx(0.5 * (a + b)));
+	CHECK(circle->B() == doctest::Approx(0.5 * (a + b)));
+	CHECK(circle->N() == 2.0);
+	const auto ellipse = std::dynamic_pointer_cast<const SuperellipseShape>(demo::MixedParticle(a, b, 0.5, 0.5));
+	REQUIRE(ellipse);
+	CHECK(ellipse->A() == a);
+	CHECK(ellipse->B() == b);
+	CHECK(ellipse->N() == 2.0);
+	const auto super = std::dynamic_pointer_cast<const SuperellipseShape>(demo::MixedParticle(a, b, 0.9, 0.25));
+	REQUIRE(super);
+	CHECK(super->N() == 3.25);
+	CHECK(super->M() == 3.25);
+}
 
 #ifdef B2A_BENCH_SCENES // the benchmarks are optional (B2A_BUILD_BENCHMARKS)
 
@@ -257,6 +289,33 @@ TEST_CASE("b2a_bench_scenes --game: each family beside its 8-gons, every particl
 	CHECK(j["particles_intact"].get<bool>());
 	CHECK(j["runs"].size() == 4);
 	CHECK(j["runs"][0]["step_cpu_ms_repeats"].size() == 2);
+}
+
+TEST_CASE("b2a_bench_scenes: the mixed scene runs both variants and keeps every particle")
+{
+	const std::string out = "demo_out/bench_scenes_mixed";
+	std::filesystem::remove_all(out);
+	std::filesystem::create_directories("demo_out");
+	const std::string cmd = std::string("\"") + B2A_BENCH_SCENES + "\" --quick --scenes mixed --out " + out + " > " + out +
+	                        ".stdout 2> " + out + ".stderr";
+	INFO("command: " << cmd);
+	REQUIRE(std::system(cmd.c_str()) == 0);
+	std::vector<std::string> header;
+	const std::vector<Row> rows = ReadCsv(out + "/scenes.csv", header);
+	REQUIRE(rows.size() == 2);
+	for (const Row& r : rows)
+	{
+		CHECK(r.at("scene") == "mixed");
+		CHECK(Number(r, "particles_end") == 250);
+		CHECK(Number(r, "nonfinite") == 0);
+		CHECK(Number(r, "escaped") == 0);
+	}
+	std::ifstream f(out + "/summary.json");
+	REQUIRE(f.good());
+	const nlohmann::json s = nlohmann::json::parse(f);
+	CHECK(s["particles_intact"] == true);
+	// Hulls of the hearts' 8 points have fewer vertices; every vertex lies on its surface.
+	CHECK(s["polygon_check"]["mixed"]["max_vertex_radial_error"].get<double>() < 1e-6);
 }
 
 #endif

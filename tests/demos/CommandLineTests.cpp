@@ -241,7 +241,7 @@ TEST_CASE("every demo and benchmark rejects a bad value with exit status 2 and a
 		 "b2a_demo_collision: --seed: needs a whole number from 0 to 18446744073709551615, got 'x' (see --help)"},
 #ifdef B2A_BENCH_SCENES
 		{B2A_BENCH_SCENES, "--scenes packing,bogus",
-		 "b2a_bench_scenes: --scenes: item 2 of 'packing,bogus' needs one of packing, hopper, layer, got 'bogus' (see --help)"},
+		 "b2a_bench_scenes: --scenes: item 2 of 'packing,bogus' needs one of packing, hopper, layer, mixed, got 'bogus' (see --help)"},
 		{B2A_BENCH_SCENES, "--counts 12.5",
 		 "b2a_bench_scenes: --counts: item 1 of '12.5' needs a whole number from 10 to 1e+06, got '12.5' (see --help)"},
 #endif

@@ -23,6 +23,7 @@
 #include <mutex>
 #include <new>
 #include <type_traits>
+#include <typeinfo>
 
 namespace b2a
 {
@@ -216,8 +217,13 @@ bool SameTransform(const b2Transform& x, const b2Transform& y)
 
 AnalyticContact* AnalyticContact::FromAnalytic(b2Contact* contact)
 {
-	AnalyticContact* c = dynamic_cast<AnalyticContact*>(contact);
-	return c && (c->m_sideA.shape || c->m_sideB.shape) ? c : nullptr;
+	// The class is final: its exact type is what a dynamic_cast would accept, and the type
+	// comparison costs a load and a compare where the cast walks the hierarchy (PrepareContacts
+	// asks it of every contact of every step, on its serial path).
+	if (!contact || typeid(*contact) != typeid(AnalyticContact))
+		return nullptr;
+	AnalyticContact* c = static_cast<AnalyticContact*>(contact);
+	return c->m_sideA.shape || c->m_sideB.shape ? c : nullptr;
 }
 
 void AnalyticContact::Prepare()

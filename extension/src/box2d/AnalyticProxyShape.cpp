@@ -1,4 +1,4 @@
-// b2analytic: the proxy b2Shape of analytic fixtures: exact AABB, mass, point test and ray cast.
+// b2analytic: the proxy b2Shape of analytic fixtures: enclosing AABB, mass, point test, ray cast.
 #include "box2d/AnalyticProxyShape.h"
 
 #include "b2analytic/SurfaceQueries.h"
@@ -94,21 +94,59 @@ bool AnalyticProxyShape::RayCast(b2RayCastOutput* output, const b2RayCastInput& 
 	return true;
 }
 
+// How far a shape may turn from its anchor before ComputeAABB recomputes its exact box: the
+// box grows by at most this on every side, 3 % of the margin by which Box2D fattens every proxy
+// (b2_aabbExtension: 0.1 length units, 5 % of a 2 mm particle in the millimetre scenes), so the
+// fat boxes and the pairs they make stay those of tight boxes to within that. (A tenth of the
+// margin made 3 % more pairs in the packing scene for no fewer recomputations; docs/benchmarks.md.)
+constexpr double kAnchorTurnFraction = 0.03;
+
 void AnalyticProxyShape::ComputeAABB(b2AABB* aabb, const b2Transform& transform, int32) const
 {
-	AnalyticFixtureData& data = MutableData();
-	if (data.hasLastBox && std::memcmp(&transform, &data.lastTransform, sizeof(b2Transform)) == 0)
+	AabbCache& cache = MutableData().box;
+	if (cache.valid && std::memcmp(&transform, &cache.lastTransform, sizeof(b2Transform)) == 0)
 	{
-		*aabb = data.lastBox; // (a heart's box is four supports)
+		*aabb = cache.lastBox;
 		return;
 	}
-	// The tight box of the true shape, rounded outwards to float.
-	const Box box = data.shape->ComputeAABB(WorldPose(transform));
+	const Pose pose = WorldPose(transform);
+	if (cache.valid)
+	{
+		// A point x = a + Q u of the shape at the anchor (a, Q) is x' = a' + Q' u at the new pose,
+		// x' − x = (a' − a) + (Q' − Q) u, and Q' − Q is the rotation-like matrix of (c' − c, s' − s),
+		// whose norm is the length of that difference (2 |sin(Δθ/2)| ≤ |Δθ|). So the anchor's box
+		// moved by a' − a and widened by |q' − q|·max|u| on every side holds the shape: no
+		// support, no shape data. The sums carry a relative rounding of a few 1e-16, covered by
+		// `rounding`, and round outwards to float.
+		const Vec2 shift = pose.p - cache.anchor.p;
+		const double dc = pose.q.c - cache.anchor.q.c, ds = pose.q.s - cache.anchor.q.s;
+		const double turn = std::sqrt(dc * dc + ds * ds) * cache.radius;
+		if (turn <= kAnchorTurnFraction * b2_aabbExtension)
+		{
+			const b2AABB& a = cache.anchorBox;
+			const double size = std::fabs(a.lowerBound.x) + std::fabs(a.lowerBound.y) + std::fabs(a.upperBound.x) +
+			                    std::fabs(a.upperBound.y) + std::fabs(shift.x) + std::fabs(shift.y) + cache.radius;
+			const double widen = turn + 1e-14 * size;
+			aabb->lowerBound.Set(FloatBelow(a.lowerBound.x + shift.x - widen), FloatBelow(a.lowerBound.y + shift.y - widen));
+			aabb->upperBound.Set(FloatAbove(a.upperBound.x + shift.x + widen), FloatAbove(a.upperBound.y + shift.y + widen));
+			cache.lastTransform = transform;
+			cache.lastBox = *aabb;
+			return;
+		}
+	}
+	// The tight box of the true shape, rounded outward to float; the new anchor.
+	const Shape& shape = *Data().shape;
+	const Box box = shape.ComputeAABB(pose);
 	aabb->lowerBound.Set(FloatBelow(box.lower.x), FloatBelow(box.lower.y));
 	aabb->upperBound.Set(FloatAbove(box.upper.x), FloatAbove(box.upper.y));
-	data.lastTransform = transform;
-	data.lastBox = *aabb;
-	data.hasLastBox = true;
+	cache.anchor = pose;
+	cache.anchorBox = *aabb;
+	// The bounding radius is a maximum found by a Brent search (Shape::Finalize): a relative 1e-9
+	// above it covers that search's tolerance.
+	cache.radius = shape.BoundingRadius() * (1.0 + 1e-9);
+	cache.lastTransform = transform;
+	cache.lastBox = *aabb;
+	cache.valid = true;
 }
 
 b2MassData AnalyticMassData(const Shape& shape, const Pose& local, float density)

@@ -12,6 +12,22 @@
 namespace b2a
 {
 
+/// What ComputeAABB keeps between calls, in one cache line: Box2D asks each moving body's
+/// fixtures for the boxes at its last and new transforms every step (b2Fixture::Synchronize), so
+/// the last is asked again (`lastTransform`, `lastBox`); and the exact box at an anchor pose,
+/// from which a box at a nearby pose follows without the shape (see ComputeAABB).
+struct alignas(64) AabbCache
+{
+	// First cache line: what every call reads.
+	b2Transform lastTransform;
+	b2AABB lastBox;
+	b2AABB anchorBox;    ///< the shape's tight box at `anchor`, rounded outwards to float
+	double radius = 0.0; ///< an upper bound on |x| over the shape in its own frame
+	bool valid = false;
+	// Second: the anchor itself.
+	Pose anchor; ///< world pose of the shape where `anchorBox` was computed
+};
+
 /// What an analytic fixture knows beyond Box2D: shared by the fixture's shape and every copy of
 /// it, counted, and released with the last copy (fixture destruction, body destruction and
 /// world destruction all destroy the fixture's shape).
@@ -23,12 +39,9 @@ struct AnalyticFixtureData
 	double patchTolerance = 0.0;
 	double patchMinWidth = 0.0; // absolute: the fraction times the bounding radius
 	SolverOptions solver;
-	// The last box ComputeAABB gave and its transform: Box2D asks each moving body's fixtures for
-	// the boxes at its last and new transforms every step (b2Fixture::Synchronize), so the last
-	// is asked again. Box2D calls it from its own thread only (never from PrepareContacts').
-	b2Transform lastTransform;
-	b2AABB lastBox;
-	bool hasLastBox = false;
+	/// The broad phase's box cache (ComputeAABB). Box2D calls it from its own thread only (never
+	/// from PrepareContacts').
+	AabbCache box;
 };
 
 /// A b2PolygonShape whose virtual functions answer for the analytic shape, and whose vertices

@@ -63,8 +63,8 @@ PrepareContactsResult PrepareContacts(b2World* world, int threads)
 
 	std::vector<AnalyticContact*> work;
 	for (b2Contact* c = world->GetContactList(); c; c = c->GetNext())
-		if (StepEvaluates(world->GetContactManager().m_broadPhase, c))
-			if (AnalyticContact* ac = AnalyticContact::FromAnalytic(c))
+		if (AnalyticContact* ac = AnalyticContact::FromAnalytic(c))
+			if (StepEvaluates(world->GetContactManager().m_broadPhase, c))
 				work.push_back(ac);
 
 	PrepareContactsResult result;

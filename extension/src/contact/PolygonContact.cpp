@@ -5,12 +5,30 @@
 #include "contact/ResultChecks.h"
 #include "numerics/RootFinding.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 namespace b2a
 {
+
+namespace
+{
+// The 16 directions kπ/8 that every wall contact tries, computed once: the same values as
+// computing them at each call, without 32 libm calls a contact (and the angle of the best
+// direction is taken once, after the candidates, not at each improvement).
+const std::array<Vec2, 16>& EvenDirections()
+{
+	static const std::array<Vec2, 16> directions = [] {
+		std::array<Vec2, 16> d;
+		for (int k = 0; k < 16; ++k)
+			d[k] = Vec2(std::cos(kPi * k / 8.0), std::sin(kPi * k / 8.0));
+		return d;
+	}();
+	return directions;
+}
+} // namespace
 
 ContactResult SeparatingAxisContact(const Shape& a, const Pose& pa, const Vec2* vertices, int count, const Pose& pb,
                                     const Vec2* guessNormal)
@@ -44,7 +62,7 @@ ContactResult SeparatingAxisContact(const Shape& a, const Pose& pa, const Vec2* 
 		support = WorldSupport(a, pa, n);
 		return lowest - Dot(support, n);
 	};
-	double bestAngle = 0.0, best = -std::numeric_limits<double>::infinity();
+	double best = -std::numeric_limits<double>::infinity();
 	int bestFace = -1; // the face whose normal gave the best gap (-1: another direction)
 	Vec2 bestNormal, bestSupport;
 	auto consider = [&](Vec2 n, int face) {
@@ -55,7 +73,6 @@ ContactResult SeparatingAxisContact(const Shape& a, const Pose& pa, const Vec2* 
 		if (g > best)
 		{
 			best = g;
-			bestAngle = std::atan2(n.y, n.x);
 			bestFace = face;
 			bestNormal = n;
 			bestSupport = support;
@@ -77,8 +94,9 @@ ContactResult SeparatingAxisContact(const Shape& a, const Pose& pa, const Vec2* 
 	consider(centroid - pa.p, -1);
 	if (guessNormal)
 		consider(*guessNormal, -1);
-	for (int k = 0; k < 16; ++k)
-		consider(Vec2(std::cos(kPi * k / 8.0), std::sin(kPi * k / 8.0)), -1);
+	for (const Vec2& n : EvenDirections())
+		consider(n, -1);
+	double bestAngle = std::atan2(bestNormal.y, bestNormal.x);
 	// A face normal that is a local maximum needs no refinement: a particle resting on a wall.
 	// With t = n' (the normal turned by +90°), the gap's one-sided derivatives there are
 	// (v − s_A(n))·t, v the face end that is lowest along n turned slightly that way (the
