@@ -147,12 +147,15 @@ double NormalCurvature(const Shape& s, Vec2 x)
 // A's outward unit normal na and B's nb, opposed: their mean where they agree to 1e-8 rad (its
 // error then at most that), else their mean weighted by the inverse curvatures (NormalCurvature),
 // whose error is at most twice the smaller curvature's turn: the mean of a needle's normal and a
-// round particle's carried half the needle's error (up to 4e-4 rad). Swapping A and B flips it
-// exactly either way.
+// round particle's carried half the needle's error (up to 4e-4 rad). The weights assume a point
+// near the solution (its error small against the curvatures' radii); where the normals are more
+// than 4e-3 rad apart it is not (an unrefined grid's sample), and the plain mean is no worse a
+// guess. Swapping A and B flips it exactly either way.
 Vec2 OpposedNormal(const Shape& a, Vec2 xa, Vec2 na, const Shape& b, Vec2 xb, Vec2 nb)
 {
 	const Vec2 mean = na - nb;
-	if (LengthSquared(na + nb) <= 1e-16)
+	const double apart = LengthSquared(na + nb);
+	if (apart <= 1e-16 || apart > 4e-3 * 4e-3)
 		return Normalize(mean);
 	const double ka = NormalCurvature(a, xa), kb = NormalCurvature(b, xb);
 	const Vec2 weighted = kb * na - ka * nb;
