@@ -1364,10 +1364,27 @@ int main(int argc, char** argv)
 	        "superellipse shapes to draw from (default 16384, 512 with --quick; hearts:\n"
 	        "N/16). Making a heart costs a millisecond, so configurations share them.",
 	        demo::WholeNumber(16, 1e6));
+	std::vector<int> ids;
+	cli.Add("--ids", ids, "I,J,...",
+	        "run only these configurations (of the run --seed and --pool make) and write\n"
+	        "each in full, with its results and checks, to DIR/configurations.json",
+	        demo::WholeNumber(0, 1e9));
 	const demo::DemoOptions o = cli.Parse(argc, argv);
 	demo::Progress progress("b2a_stress");
 	const double cpuStart = bench::ThreadCpuNanoseconds();
 	ShapePool pool(o.seed, poolSize, poolSize / 16);
+	if (!ids.empty())
+	{
+		Json list = Json::array();
+		for (int i : ids)
+		{
+			const Config c = MakeConfig(o.seed, std::uint64_t(i), pool);
+			list.push_back(ConfigJson(c, Run(c, true)));
+		}
+		demo::WriteJson(o.out + "/configurations.json", list);
+		std::printf("%zu configurations -> %s/configurations.json\n", ids.size(), o.out.c_str());
+		return 0;
+	}
 	// The dense subset: a fixed pseudo-random choice (every K-th index would always fall in the
 	// same category, whose slots repeat every 100).
 	auto dense = [&](std::uint64_t i) { return Mix(i ^ 0xD1B54A32D192ED03ull) % fullEvery == 0; };

@@ -124,6 +124,22 @@ inline bool ConditionsHold(double psiA, double psiB, Vec2 gradA, Vec2 gradB, con
 	return ResidualOfConditions(psiA, psiB, gradA, gradB, hessA, hessB, delta).Within(1e-11, 1e-10, power);
 }
 
+/// Whether the rounding of a point alone (`deltaSquared`: the square of its coordinates'
+/// rounding, in the gradients' units) turns the two normals by at most 1e-2 rad in all: each
+/// level curve's curvature |tᵀHt|/|∇ψ| times the rounding at most half that (ResidualOfConditions'
+/// angle floor, multiplied out and squared: no roots, no divisions). Beyond it the normals'
+/// agreement in double shows nothing (needles crossing deep inside each other, at levels of
+/// 1e-18: a floor of 1e3 rad and more, with the true normals 0.04 to 2.4 rad apart), and a
+/// point that passes ConditionsHold is still no verified solution.
+inline bool RoundingKeepsNormals(Vec2 gradA, Vec2 gradB, const Sym22& hessA, const Sym22& hessB, double deltaSquared)
+{
+	const Vec2 u = Perp(gradA); // the tangent, |∇ψA| long
+	const double a2 = LengthSquared(gradA), b2 = LengthSquared(gradB);
+	const double ta = Dot(u, hessA * u), tb = Dot(u, hessB * u); // |∇ψA|² tᵀHt
+	const double half = 0.25 * 1e-2 * 1e-2;                     // (1e-2 / 2)²
+	return ta * ta * deltaSquared <= half * a2 * a2 * a2 && tb * tb * deltaSquared <= half * a2 * a2 * b2;
+}
+
 /// The largest absolute row sum of a symmetric 2×2 matrix (a bound on its eigenvalues).
 inline double NormOf(const Sym22& h)
 {

@@ -43,6 +43,22 @@ inline void EvaluatePair(const SuperellipseTerms& ta, const SuperellipseTerms& t
 	e.hB = Sym22{c * c * db.hx + s * s * db.hy, c * s * (db.hx - db.hy), s * s * db.hx + c * c * db.hy};
 }
 
+// Whether the raw levels at x solve the conditions (ConditionsHold: their mismatch and the
+// normals' alignment, to what the rounding of x allows). Every exit of the steps tests it, the
+// last step taken unevaluated too (its values are exact to O(|δ|²)): NearSolution's 1e-5 rad
+// before that step does not bound the normals after it.
+// And the point's rounding must keep the normals (RoundingKeepsNormals), or agreement in
+// double shows nothing.
+bool RawConditionsHold(const PairDerivatives& e, Vec2 x, const Pose& rel, const Pose& pa, const Pose& pb)
+{
+	const double eps = std::numeric_limits<double>::epsilon();
+	const double reach2 = std::max({LengthSquared(x), LengthSquared(rel.p), LengthSquared(pa.p), LengthSquared(pb.p)});
+	if (!RoundingKeepsNormals(e.gA, e.gB, e.hA, e.hB, eps * eps * reach2))
+		return false;
+	return ConditionsWithin(e.fA, e.fB, e.gA, e.gB, 1e-11, 1e-11) ||
+	       ConditionsHold(e.fA, e.fB, e.gA, e.gB, e.hA, e.hB, eps * std::sqrt(reach2), 1.0);
+}
+
 // Newton on the raw levels from (x, μ) with the pair evaluated there in e: plain steps, with no
 // line search, trust region or fallback of their own. A step larger than 5 % of the size, one
 // that does not contract by 4 as Newton does in its quadratic regime, a singular Jacobian or 4
@@ -97,19 +113,14 @@ bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb,
 			x = x + dx;
 			mu += dmu;
 			e.xB = InvRotate(rel.q, x - rel.p);
-			return mu > 0.0;
+			return mu > 0.0 && RawConditionsHold(e, x, rel, pa, pb);
 		}
 		x = x + dx;
 		mu += dmu;
 		EvaluatePair(ta, tb, rel, x, e);
 		// A step below the tolerance ends the steps only at a solution (ConditionsHold on the raw
 		// levels: their mismatch and the normals' alignment, to what the rounding of x allows).
-		if (stepX <= tolerance &&
-		    (ConditionsWithin(e.fA, e.fB, e.gA, e.gB, 1e-11, 1e-11) ||
-		     ConditionsHold(e.fA, e.fB, e.gA, e.gB, e.hA, e.hB,
-		                    std::numeric_limits<double>::epsilon() *
-		                        std::max({Length(x), Length(rel.p), Length(pa.p), Length(pb.p)}),
-		                    1.0)))
+		if (stepX <= tolerance && RawConditionsHold(e, x, rel, pa, pb))
 			return mu > 0.0;
 		previous = stepX;
 		previousMu = stepMu;

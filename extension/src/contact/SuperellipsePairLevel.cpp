@@ -378,13 +378,29 @@ bool Solved(const PairInA& p, const Point& q, const Pose& pa, const Pose& pb, do
 
 // The answer at the solved point q (opposed gradients and a positive multiplier, else the
 // failure), and what the contact needs from it in `at`.
-LevelResult Answer(const Pose& pa, double size, const Point& q, const WarmStart* warm, SuperellipsePairPoint* at,
-                   LevelResult result)
+LevelResult Answer(const PairInA& p, const Pose& pa, const Pose& pb, double size, const Point& q, const WarmStart* warm,
+                   SuperellipsePairPoint* at, LevelResult result)
 {
 	const Vec2 nA = Normalize(Vec2(q.A.gx, q.A.gy)), nB = Normalize(Vec2(q.B.gx, q.B.gy));
 	if (!(Dot(nA, nB) < -1.0 + 1e-6))
 	{
 		result.failure = "converged to a point where the gradients are not opposed";
+		return result;
+	}
+	// Every exit (a step below the tolerance, a residual below 1e-15 of its scale, the last step
+	// taken unevaluated, a singular Jacobian at rounding level) promises a solution only where
+	// the conditions hold at the point (Solved): deep inside each other, needles' gauges agree to
+	// 1e-11 while their normals are 0.01 to 2 rad apart, and the contact's normal is their mean.
+	// There the double point's rounding alone turns the normals by 1e3 rad or more
+	// (RoundingKeepsNormals), and agreement in double says nothing.
+	const double reach2 = std::max(LengthSquared(pa.p), LengthSquared(pb.p)) / (size * size);
+	const double eps = std::numeric_limits<double>::epsilon();
+	if (!Solved(p, q, pa, pb, size) ||
+	    !RoundingKeepsNormals(Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), Sym22{q.A.hxx, q.A.hxy, q.A.hyy},
+	                          Sym22{q.B.hxx, q.B.hxy, q.B.hyy},
+	                          eps * eps * std::max({LengthSquared(q.xi), LengthSquared(p.c), reach2})))
+	{
+		result.failure = "stopped short of a solution (its levels or normals disagree beyond rounding)";
 		return result;
 	}
 	if (!(q.mu > 0.0))
@@ -550,7 +566,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 			return result;
 		}
 	}
-	return Answer(pa, size, *current, warm, at, result);
+	return Answer(p, pa, pb, size, *current, warm, at, result);
 }
 
 } // namespace b2a

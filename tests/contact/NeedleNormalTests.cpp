@@ -1,0 +1,158 @@
+// Contact normals beside needle-shaped superellipses, from the stress benchmark
+// (demos/benchmarks/b2a_stress.cpp, seed 1, configurations named by index; poses and shapes in
+// hex floats as it wrote them), and perturbed neighbours of each.
+//
+// References, in long double (ContactReference.h; the library is used only for the poses'
+// cosine and sine): the optimality conditions solved by Newton (PolishLagrange) from the
+// library's point, and held to be solved (levels to 1e-12, normals opposed to 1e-12 rad) before
+// they are used, so that a reference that did not converge fails the test rather than passes it.
+#include <doctest/doctest.h>
+
+#include "b2analytic/b2analytic.h"
+#include "ContactReference.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace b2a;
+namespace ref = b2a::test::ref;
+using ref::LD;
+using ref::V;
+
+namespace
+{
+/// A shape as the stress run wrote it.
+struct Spec
+{
+	bool heart = false;
+	double a = 0.0, b = 0.0, n = 0.0, m = 0.0; // (a: the heart's α)
+	static Spec Heart(double alpha) { return {true, alpha, 0.0, 0.0, 0.0}; }
+	static Spec Super(double a, double b, double n, double m) { return {false, a, b, n, m}; }
+	ShapePtr Make() const { return heart ? ShapePtr(MakeHeart(a)) : ShapePtr(MakeSuperellipse(a, b, n, m)); }
+	ref::RefShape Ref() const { return heart ? ref::RefShape::Heart(a) : ref::RefShape::Super(a, b, n, m); }
+};
+
+/// A configuration of the stress run.
+struct Config
+{
+	int index;
+	Spec a, b;
+	Pose pa, pb;
+};
+
+/// The configuration and its neighbours: B moved by 1e-9 and 1e-7 of the smaller particle's
+/// bounding radius along each axis, and A turned by ±1e-7 rad.
+std::vector<std::pair<Pose, Pose>> Neighbours(const Config& c, double size)
+{
+	std::vector<std::pair<Pose, Pose>> poses{{c.pa, c.pb}};
+	for (double d : {1e-9, -1e-7})
+	{
+		poses.push_back({c.pa, Pose(c.pb.p + Vec2(d * size, 0.0), c.pb.q)});
+		poses.push_back({c.pa, Pose(c.pb.p + Vec2(0.0, d * size), c.pb.q)});
+	}
+	for (double t : {1e-7, -1e-7})
+		poses.push_back({Pose(c.pa.p, std::atan2(c.pa.q.s, c.pa.q.c) + t), c.pb});
+	return poses;
+}
+
+/// The angle between two unit directions (long double).
+LD Angle(V u, V v) { return std::atan2(std::fabs(ref::Cross(u, v)), ref::Dot(u, v)); }
+
+/// Whether X solves the conditions in long double: A's and B's unit normals opposed to 1e-12
+/// rad, and `level` of B (the one-sided scale, common false) or of both (common true) within
+/// 1e-12 of each other.
+bool Solved(const ref::RefShape& A, const ref::RefPose& pa, const ref::RefShape& B, const ref::RefPose& pb, V X, bool common,
+            LD level)
+{
+	const ref::Deriv da = ref::WorldDeriv(A, pa, X), db = ref::WorldDeriv(B, pb, X);
+	const LD lb = B.Level(ref::ToBodyL(pb, X)), la = A.Level(ref::ToBodyL(pa, X));
+	const bool levels = common ? std::fabs(la - lb) <= 1e-12L * la : std::fabs(lb - level) <= 1e-12L * level;
+	return levels && Angle(ref::Unit(da.grad), -1.0L * ref::Unit(db.grad)) <= 1e-12L;
+}
+
+// Hearts beside needles, in range (size ratio below 1e4): the one-sided grid scale's point is
+// right to ~1e-12 of the size, and the needle's normal there turns by 1e4 or more times the
+// heart's with the point's error. The contact's normal, the mean of the two, carried half the
+// needle's turn: 1.1e-6 to 3.8e-4 rad.
+const std::vector<Config> kHeartNeedles = {
+	{399724, Spec::Heart(0x1.e5e2834ec30f9p+8), Spec::Super(0x1.814a5b0b85c15p-17, 0x1.4a46df31ae0c9p-8, 0x1.09d82377a8309p+3, 0x1.4e6ac26034d66p+3), Pose(Vec2(-0x1.1caefc3d2a126p+8, -0x1.c9d4c7172d2a4p+6), -0x1.81b53dce47c36p+1), Pose(Vec2(-0x1.b8e73cee8da93p-7, -0x1.9e9d972c68bc1p-8), 0x1.f223ec179781p+0)},
+	{550116, Spec::Heart(0x1.32d3ca4ab76bfp+6), Spec::Super(0x1.a53b780151b7ep-19, 0x1.17527c590a23ep-9, 0x1p+1, 0x1p+1), Pose(Vec2(0x1.3e2809a10f79bp+6, 0x1.f19e36f4e20b7p+2), -0x1.022c120423f5ap+1), Pose(Vec2(-0x1.2319254a62778p-7, 0x1.c4ea6f8859ad6p-8), 0x1.08701b76b3d72p+1)},
+	{589624, Spec::Super(0x1.52ecba7c403f3p-16, 0x1.049d9c9054583p-6, 0x1.8p+3, 0x1.8p+3), Spec::Heart(0x1.d368820655c77p+13), Pose(Vec2(0x1.7235933898dc1p-5, 0x1.5d7d0b4feac1dp-9), -0x1.35e1fece6659p-2), Pose(Vec2(0x1.89e30609a7378p+5, 0x1.b7b49b7597505p+6), 0x1.fc0ccfc5c6f98p-1)},
+	{643116, Spec::Heart(0x1.ad5c2565cb08dp+9), Spec::Super(0x1.1ac26258f0a07p-16, 0x1.49987fb195b5bp-7, 0x1.e76a8ca11d57p+3, 0x1.328d28a0334a8p+3), Pose(Vec2(0x1.79dc7251dbe29p+3, 0x1.76a2d7b8b091ap+5), -0x1.fa1f37d9f8e0ap+0), Pose(Vec2(-0x1.0ba497d5f683cp-6, -0x1.0a1498f8d93f9p-5), 0x1.44fdb96ea49e8p+1)},
+	{758143, Spec::Super(0x1.16ec553b43559p-4, 0x1.768b0b8d4d58cp-14, 0x1p+1, 0x1p+1), Spec::Heart(0x1.1b1d0cafe3365p+7), Pose(Vec2(-0x1.e549d67422137p-3, -0x1.125b7f8b599a7p-2), 0x1.7207ca5ab63a4p+0), Pose(Vec2(0x1.f5a1a85b836f7p+0, 0x1.4fc8d2865ae5ep+3), -0x1.591214b7acaa4p+0)},
+	{803951, Spec::Super(0x1.d9570a9742dafp-7, 0x1.e4b33e0b880b3p-17, 0x1p+1, 0x1p+1), Spec::Heart(0x1.b00868298ebaap-12), Pose(Vec2(0x1.9db965e15fc31p-5, -0x1.2652f9bdae3afp-2), 0x1.d6de1b182d994p+0), Pose(Vec2(-0x1.aa5320d708623p-5, 0x1.674af1e7e8ea5p-3), -0x1.25cc9fcfb0882p+1)},
+	{918989, Spec::Heart(0x1.34b9dade1f645p+7), Spec::Super(0x1.e973a94059a82p-7, 0x1.18a9d29ddf64bp-14, 0x1.8p+2, 0x1.8p+2), Pose(Vec2(-0x1.efc0c0b222fe2p+5, 0x1.2e462f5c516a7p+8), -0x1.0f8da2f2965e4p-1), Pose(Vec2(0x1.a1350e108ecccp-5, 0x1.4ad50fdcf471ap-8), -0x1.3b89d63387c8p-1)},
+	{930551, Spec::Super(0x1.73586298d25cp-15, 0x1.bbfff85ee2a25p-9, 0x1p+1, 0x1p+1), Spec::Heart(0x1.749c0f8fd030ep+9), Pose(Vec2(0x1.6a4f83f82b6d9p-8, 0x1.91757f1e75409p-7), -0x1.ffefc2e03018p-3), Pose(Vec2(0x1.7a865f90b01c9p+0, -0x1.d6fedf23ab4b5p+4), -0x1.048f81ee03b6ep+0)},
+};
+
+// Needles crossing deep inside each other (common levels of 1e-20 to 1e-18): Newton's levels
+// agreed to 1e-11 in double while the rounding of its point alone turned the normals by 1e3 rad
+// and more, and the true normals there were 0.04 to 2.4 rad apart.
+const std::vector<Config> kDeepNeedles = {
+	{264505, Spec::Super(0x1.c6278dc905c3dp-6, 0x1.aa9868a583074p-10, 0x1.ep+3, 0x1p+1), Spec::Super(0x1.cf924b21481aep-4, 0x1.919d98ccdd1b4p-12, 0x1.ep+3, 0x1.6p+3), Pose(Vec2(0x1.7f9cfe4ace47p-4, -0x1.e0204c2bc4203p-5), -0x1.dca03a393f961p+0), Pose(Vec2(0x1.7b6f8fe7a9e94p-4, -0x1.cbd4f515d5a14p-5), -0x1.e1c74459672d8p-2)},
+	{298732, Spec::Super(0x1.026e3cee8f67ep-8, 0x1.2e589b0c33e0bp-17, 0x1.4p+4, 0x1p+1), Spec::Super(0x1.797c983f22a9fp-15, 0x1.81208028e255ap-6, 0x1.2p+4, 0x1.2p+4), Pose(Vec2(-0x1.1ab134deffec6p-8, 0x1.1c610608c665bp-8), 0x1.f393393aed58cp+0), Pose(Vec2(-0x1.36ab245d618d6p-8, 0x1.e3083dc9fee61p-9), 0x1.e13452515eb3p+0)},
+	{479467, Spec::Super(0x1.3b0f3143dbddbp-1, 0x1.dc96bd95d0238p+6, 0x1p+1, 0x1.1p+4), Spec::Super(0x1.18ab2202740cfp+1, 0x1.f38d89ce785cdp+7, 0x1.9f4e17d1da8dep+3, 0x1.75e706b6762b1p+3), Pose(Vec2(0x1.4c141026add2fp+7, -0x1.04f7f473914fbp+7), 0x1.811bca0dd5f7p+1), Pose(Vec2(0x1.4750777e5edd9p+7, -0x1.eded5777add2ap+6), 0x1.072e05e2e7816p+1)},
+};
+} // namespace
+
+TEST_CASE("needle normals: a heart beside a needle gets the contact normal to 1e-6 rad")
+{
+	for (const Config& c : kHeartNeedles)
+	{
+		const ShapePtr a = c.a.Make(), b = c.b.Make();
+		const ref::RefShape ra = c.a.Ref(), rb = c.b.Ref();
+		const double size = std::min(a->BoundingRadius(), b->BoundingRadius());
+		for (const auto& [pa, pb] : Neighbours(c, size))
+		{
+			CAPTURE(c.index);
+			const ContactResult r = ComputeContact(*a, pa, *b, pb);
+			REQUIRE(r.Ok());
+			// The grid's point lies on one particle's surface with the other rescaled onto it: the
+			// reference solves that side's conditions from the point.
+			const ref::RefPose qa = ref::Of(pa), qb = ref::Of(pb);
+			const V X = ref::FromVec(r.point);
+			const bool onB = std::fabs(rb.Level(ref::ToBodyL(qb, X)) / rb.Own() - 1.0L) <
+			                 std::fabs(ra.Level(ref::ToBodyL(qa, X)) / ra.Own() - 1.0L);
+			const ref::RefShape& scaled = onB ? ra : rb;
+			const ref::RefShape& surface = onB ? rb : ra;
+			const ref::RefPose &ps = onB ? qa : qb, &pt = onB ? qb : qa;
+			const V Xr = ref::PolishLagrange(scaled, ps, surface, pt, X, false, surface.Own());
+			REQUIRE(Solved(scaled, ps, surface, pt, Xr, false, surface.Own()));
+			// A's outward normal at the reference point (the contact's, from A to B).
+			const V n = ref::Unit(ref::WorldDeriv(ra, qa, Xr).grad);
+			CHECK(double(Angle(ref::FromVec(r.normal), n)) <= 1e-6);
+		}
+	}
+}
+
+TEST_CASE("needle normals: needles deep inside each other get no converged level with opposed normals only in double")
+{
+	// Each solver that reports the common level converged answers a point where the normals are
+	// opposed in long double to 1e-6 rad; where no level meets that, the contact separates the
+	// pair along the axis of least overlap (ContactFromLevelChain).
+	for (const Config& c : kDeepNeedles)
+	{
+		const ShapePtr a = c.a.Make(), b = c.b.Make();
+		const ref::RefShape ra = c.a.Ref(), rb = c.b.Ref();
+		const double size = std::min(a->BoundingRadius(), b->BoundingRadius());
+		for (const auto& [pa, pb] : Neighbours(c, size))
+		{
+			CAPTURE(c.index);
+			const ref::RefPose qa = ref::Of(pa), qb = ref::Of(pb);
+			auto opposed = [&](Vec2 point) {
+				const V X = ref::FromVec(point);
+				return double(Angle(ref::Unit(ref::WorldDeriv(ra, qa, X).grad), -1.0L * ref::Unit(ref::WorldDeriv(rb, qb, X).grad)));
+			};
+			const LevelResult level = SolveCommonLevel(*a, pa, *b, pb);
+			if (level.Ok())
+				CHECK(opposed(level.point) <= 1e-6);
+			const ContactResult r = ComputeContact(*a, pa, *b, pb);
+			REQUIRE(r.Ok());
+			if (r.method == SolveMethod::overlapAxis)
+				CHECK(r.touching);
+			else
+				CHECK(opposed(r.point) <= 1e-6);
+		}
+	}
+}
