@@ -12,6 +12,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <thread>
 
 using namespace b2a;
 using namespace b2a::test;
@@ -139,6 +140,31 @@ TEST_CASE("contacts prepared on 1, 2 and 3 threads step bit-identically to b2Wor
 		if (b->GetType() == b2_dynamicBody)
 			highest = std::max(highest, double(b->GetPosition().y));
 	CHECK(highest < 7.0);
+}
+
+TEST_CASE("two threads that prepare two worlds at once, each on 2 threads, step as b2World::Step alone")
+{
+	// The helper threads serve one call at a time; the call that finds them busy computes its
+	// contacts alone. Either way each world must step as the plain one does.
+	const int count = 55;
+	b2World plain(b2Vec2(0.0f, -10.0f)), a(b2Vec2(0.0f, -10.0f)), b(b2Vec2(0.0f, -10.0f));
+	for (b2World* w : {&plain, &a, &b})
+		BuildScene(*w, count);
+	const int steps = 120;
+	int preparedA = 0, preparedB = 0;
+	std::thread other([&] {
+		for (int step = 0; step < steps; ++step)
+			preparedB += StepWithPreparedContacts(&b, 1.0f / 60.0f, 8, 3, 2).prepared;
+	});
+	for (int step = 0; step < steps; ++step)
+		preparedA += StepWithPreparedContacts(&a, 1.0f / 60.0f, 8, 3, 2).prepared;
+	other.join();
+	for (int step = 0; step < steps; ++step)
+		plain.Step(1.0f / 60.0f, 8, 3);
+	CHECK(SameState(plain, a));
+	CHECK(SameState(plain, b));
+	CHECK(preparedA == preparedB);
+	CHECK(preparedA > steps * count / 2);
 }
 
 TEST_CASE("PrepareContacts refuses a null world, negative threads and a locked world by name")

@@ -10,7 +10,7 @@ namespace b2a
 struct PrepareContactsResult
 {
 	int prepared = 0; ///< contacts whose manifold was computed ahead of the step
-	int threads = 1;  ///< threads used (the calling thread included)
+	int threads = 1;  ///< threads allowed to compute contacts (the calling thread included)
 };
 
 /// Computes, on `threads` threads (0: std::thread::hardware_concurrency()), the manifold of every
@@ -25,8 +25,12 @@ struct PrepareContactsResult
 /// Allowed: call it right before b2World::Step on the thread that steps the world, any number
 /// of times (each call recomputes). Not allowed: calling it while the world is locked (inside
 /// a callback; it throws MisuseError) or while another thread touches the world or its bodies.
-/// A null world or threads < 0 throw InvalidParameter naming the field. The threads are
-/// started and joined within the call.
+/// A null world or threads < 0 throw InvalidParameter naming the field. The helper threads
+/// are a pool started on first use, grown to the largest `threads` - 1 asked for, and kept
+/// until the program exits; the calling thread computes contacts too and waits only for those
+/// a helper has begun, so a helper that is not scheduled in time costs nothing. Several threads
+/// may prepare different worlds at once: the pool serves one call at a time, and a call that
+/// finds it busy computes its contacts on its own thread.
 PrepareContactsResult PrepareContacts(b2World* world, int threads = 0);
 
 /// PrepareContacts(world, threads) followed by world->Step(timeStep, velocityIterations,
