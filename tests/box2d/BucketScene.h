@@ -5,6 +5,9 @@
 
 #include "common/GameBucket.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace b2a::test
 {
 
@@ -27,6 +30,34 @@ inline double BucketAsleepAt(const std::vector<ShapePtr>& families, int particle
 			return step * double(demo::kGameStep);
 	}
 	return -1.0;
+}
+
+/// When the piles of seeds 1-5 slept (s; a pile awake after maxTime counts as maxTime), and
+/// the medians: a pile sleeps when its last mover stops, which differs from seed to seed by up
+/// to five times or more, so the median of five is what a test can hold a family to.
+struct MedianAsleepTimes
+{
+	std::vector<double> analytic, polygons; ///< per seed, 1 to 5
+	double analyticMedian = 0.0, polygonsMedian = 0.0;
+};
+
+/// BucketAsleepAt for seeds 1-5, analytic and as 8-gons, and the medians.
+inline MedianAsleepTimes MedianAsleep(const std::string& family, int particles, float halfWidth, double maxTime)
+{
+	MedianAsleepTimes m;
+	for (std::uint64_t seed = 1; seed <= 5; ++seed)
+		for (bool poly : {false, true})
+		{
+			const double t = BucketAsleepAt(BucketFamilies(family), particles, halfWidth, poly, seed, maxTime);
+			(poly ? m.polygons : m.analytic).push_back(t > 0.0 ? t : maxTime);
+		}
+	auto median = [](std::vector<double> v) {
+		std::sort(v.begin(), v.end());
+		return v[2];
+	};
+	m.analyticMedian = median(m.analytic);
+	m.polygonsMedian = median(m.polygons);
+	return m;
 }
 
 } // namespace b2a::test
