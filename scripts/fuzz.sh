@@ -8,7 +8,7 @@
 # Targets: contact_tool, solvers, world. New inputs go to out/fuzz/<target>/corpus (the committed
 # corpus stays as it is), crashes to out/fuzz/<target>/crash-*; the fuzzers' logs to
 # out/fuzz/<target>.log. Prints one line per target (runs, runs/s, coverage, corpus) and exits 1
-# when a target found a crash, a hang (over 10 s) or a sanitizer report. B2A_FUZZ_SEED=N fixes the
+# when a target found a crash, a hang (one input over 30 s) or a sanitizer report. B2A_FUZZ_SEED=N fixes the
 # fuzzers' random seed (CI does; default: random). A timed run is still not repeatable on another
 # machine, which makes a different number of inputs: replay a crash from the file it wrote.
 set -euo pipefail
@@ -38,7 +38,10 @@ status=0
 for t in "${targets[@]}"; do
 	out="out/fuzz/$t"
 	mkdir -p "$out/corpus"
-	args=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1
+	# One input may take seconds under the sanitizers: a 3D time of impact is up to 200 contacts
+	# (b2a_contact's step cap), each a grid contact of some 20 ms under ASan for exponents below 2.
+	# 30 s still flags a runaway loop, with room for a slower or busier machine.
+	args=(-max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1
 	      -seed="${B2A_FUZZ_SEED:-0}" -artifact_prefix="$out/")
 	if [ -f "tests/fuzz/$t.dict" ]; then
 		args+=(-dict="tests/fuzz/$t.dict")

@@ -107,9 +107,9 @@ json AnswerTimeOfImpact(const json& request, const json& id)
 	if (!(tMax >= 0.0))
 		throw RequestError("field 't_max' must be >= 0, got " + request["t_max"].dump());
 	const Motion ma{a.pose, a.velocity, a.angularVelocity}, mb{b.pose, b.velocity, b.angularVelocity};
-	const TimeOfImpactResult r = TimeOfImpact(*a.shape, ma, *b.shape, mb, tMax);
+	const TimeOfImpactResult r = TimeOfImpact(*a.shape, ma, *b.shape, mb, tMax, ToolTimeOfImpactOptions());
 	if (!r.Ok())
-		throw RequestError(std::string("time of impact failed: ") + r.failure);
+		throw TimeOfImpactError(r.failure, r.iterations, request);
 	const ContactResult& c = r.contact;
 	if (!std::isfinite(r.time) || !std::isfinite(c.separation) || !IsFinite(c.point) || !IsFinite(c.normal) || !IsFinite(c.pointA) ||
 	    !IsFinite(c.pointB))

@@ -118,11 +118,9 @@ json Answer3(const json& request, const std::string& mode, const std::string& me
 		const double tMax = Number(request, "t_max", "", true, 0);
 		if (!(tMax >= 0.0))
 			throw RequestError("field 't_max' must be >= 0, got " + request["t_max"].dump());
-		TimeOfImpactOptions options;
-		options.solver = SolverOptions{};
-		const TimeOfImpactResult3 r = TimeOfImpact(sa, a.motion, sb, b.motion, tMax, options);
+		const TimeOfImpactResult3 r = TimeOfImpact(sa, a.motion, sb, b.motion, tMax, ToolTimeOfImpactOptions());
 		if (!r.Ok())
-			throw RequestError(std::string("time of impact failed: ") + r.failure);
+			throw TimeOfImpactError(r.failure, r.iterations, request);
 		if (!Finite(r.contact) || !std::isfinite(r.time))
 			throw RequestError("solver returned a non-finite value");
 		WriteTimeOfImpact(out, r);
@@ -174,6 +172,9 @@ x, y, (z,) angle or quat give the pose at t = 0. The answer:
 with "time", "point" and "normal" the first contact's (exact: conservative advancement, then a
 root of the separation in time to 1e-13 relative); "time": null when they do not touch before
 t_max, then "point" and "normal" are null and "separation_at_t_max" is the gap at t_max.
+Conservative advancement takes at most 200 steps of gap / (approach speed bound) each; a motion
+that needs more (a fast spin kept near the other particle over a long t_max) gets an error that
+says so: ask for a shorter t_max.
 Example (the paper's Figure 17: mm, ms, rad/ms; first contact at t = 0.1923 ms):
   {"id":17,"mode":"toi","t_max":1,
    "a":{"type":"superellipsoid","a":4,"b":4,"c":4,"n":[6,6,12],"x":-10,"y":-15,"z":-10,

@@ -4,6 +4,7 @@
 
 #include "b2analytic/3d/Math3.h"
 #include "b2analytic/ContactResult.h"
+#include "b2analytic/TimeOfImpact.h"
 
 #include <nlohmann/json.hpp>
 
@@ -117,6 +118,31 @@ void WriteContact(json& out, const Contact& c)
 	out["separation"] = c.separation;
 	out["touching"] = c.touching;
 	out["iterations"] = c.iterations;
+}
+
+/// The tool's cap on conservative-advancement steps in mode toi. The library's default
+/// (TimeOfImpactOptions::maxIterations) suits a caller that chose its horizon; a request line can
+/// ask for any t_max, and a fast spin over a long horizon takes steps of gap / (|ω|·R) each, so
+/// one line could keep the tool busy for minutes. Past the cap the line gets an error naming it.
+constexpr int kToolTimeOfImpactSteps = 200;
+
+/// The time-of-impact options the tool uses in both dimensions.
+inline TimeOfImpactOptions ToolTimeOfImpactOptions()
+{
+	TimeOfImpactOptions options;
+	options.maxIterations = kToolTimeOfImpactSteps;
+	return options;
+}
+
+/// The error for a failed time of impact: the step cap named with the request's t_max, any other
+/// failure as the solver reported it.
+inline RequestError TimeOfImpactError(const char* failure, int steps, const json& request)
+{
+	if (steps >= kToolTimeOfImpactSteps)
+		return RequestError("time of impact failed: conservative advancement reached the tool's cap of " +
+		                    std::to_string(kToolTimeOfImpactSteps) + " steps before field 't_max' = " + request["t_max"].dump() +
+		                    " (a shorter t_max needs fewer steps)");
+	return RequestError(std::string("time of impact failed: ") + failure);
 }
 
 /// A time-of-impact answer's fields: the contact's at the first contact, or, with none before

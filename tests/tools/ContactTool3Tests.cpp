@@ -89,6 +89,26 @@ TEST_CASE("mode toi: the paper's Figure 17 touches within 1e-3 ms of 0.1924 ms")
 	CHECK(r["scale"].get<double>() == doctest::Approx(1.0).epsilon(1e-11));
 }
 
+TEST_CASE("mode toi: a spin that needs more than the tool's step cap is an error naming the cap and t_max")
+{
+	// A needle (half-length 4, half-thickness 0.1) spins at 50 rad/s in the plane z = 0 under a
+	// sphere whose lowest point is at z = 0.5: they never touch, the bounding spheres overlap, and
+	// each conservative step is at most the distance (under 2.3) over |w|·R = 200: a tenth of a
+	// unit of time takes over 8 steps, a thousand units over 80,000.
+	const std::string shapes = R"("a":{"type":"superellipsoid","a":4,"b":0.1,"c":0.1,"n":2,"w":[0,0,50]},)"
+	                           R"("b":{"type":"sphere","r":1,"y":3,"z":1.5}})";
+	json r = Ask3(R"({"mode":"toi","t_max":0.1,)" + shapes);
+	CHECK(r["time"].is_null());
+	// The gap at t_max: from the needle's top face (z = 0.1 at most) to the sphere's bottom.
+	CHECK(r["separation_at_t_max"].get<double>() >= 0.4 - 1e-9);
+	CHECK(r["iterations"].get<int>() > 8);
+	CHECK(r["iterations"].get<int>() < 200);
+	r = Ask3(R"({"mode":"toi","t_max":1000,)" + shapes, false);
+	CHECK(r["error"].get<std::string>() ==
+	      "time of impact failed: conservative advancement reached the tool's cap of 200 steps before field 't_max' = 1000 "
+	      "(a shorter t_max needs fewer steps)");
+}
+
 TEST_CASE("3D and toi requests: bad fields are named")
 {
 	auto error = [](const std::string& line) { return Ask3(line, false)["error"].get<std::string>(); };

@@ -102,7 +102,7 @@ Result& SearchFirstContact(Result& out, ContactAt&& contactAt, LowerBound&& lowe
 	}
 	if (out.iterations >= options.maxIterations)
 	{
-		out.failure = "conservative advancement reached its step cap";
+		out.failure = "conservative advancement reached its step cap (TimeOfImpactOptions::maxIterations)";
 		return out;
 	}
 	return ReportNoContact(out, contactAt(tMax), tMax);
