@@ -37,7 +37,16 @@ ratio up to 10), most built with a known common level C and point: log-uniform C
 deep inside the other), the same shape twice (identical); and the same shape at the same pose
 (identical_pose) or two shapes at one centre (coincident), which have no level point and get
 the axis of least overlap; and random poses (random, checked by a long-double Newton polish of
-the equations from the answer). Each is solved by ComputeContact (the automatic path).
+the equations from the answer). Each is solved by ComputeContact (the automatic path); each
+built pair is then solved warm-started after each of 3 small motions (turns and shifts of 1e-6 to
+1e-2 of a radian or of the size, the level moved as much, rebuilt with its known answer), as the
+Box2D adapter carries a contact's warm start from step to step.
+
+The headline, "in_range" (neither centre inside the other particle) and "warm_in_range": how many
+failed, gave a non-finite field or the wrong touching verdict, and how many answers reported as
+converged are not solutions (level off by more than 1e-9 relative, normal by more than 1e-6 rad),
+with the worst level, point and normal errors and the worst cases in full precision. Pairs with a
+centre inside the other are reported apart ("beyond_range_centre_inside", and warm).
 
 Writes DIR/stress3d_summary.json (per category: how many converged, converged after a fallback,
 failed, gave a non-finite field or a wrong verdict, the largest level, point and normal errors,
@@ -45,9 +54,14 @@ how many were inaccurate beyond 1e-9 of the level or the size, the mean time of 
 the worst case in full precision). Flat contacts (faces of high exponents touching face to
 face, whose point the equations' rounding moves by more than 1e-9 of the size) and random poses
 at a common level below 1e-9 (centres within a hair of each other) are counted apart as
-ill_conditioned, their errors reported separately (a flat contact's level is still checked).
-Exits 1 when any result fails, has a non-finite field, or gives the wrong touching verdict.
+ill_conditioned, their errors reported separately (a flat contact's level and normal are still
+checked).
+Exits 1 when any result fails, has a non-finite field, or gives the wrong touching verdict, or
+when an answer in range (cold or warm) has a wrong level or normal.
 )";
+
+// Warm-started solves after each built pair's cold one, each after a small motion.
+constexpr int kWarmSteps = 3;
 
 enum class Category : int { built, nearTangent, deepOverlap, identical, identicalPose, coincident, random, count };
 const char* CategoryName(Category c)
@@ -119,6 +133,38 @@ Quat Arc(Vec3 u, Vec3 v)
 	return Normalize(Quat(1.0 + d, c.x, c.y, c.z));
 }
 
+// What a built pair is made of: A's pose, the directions of the touching point from each
+// shape's centre, B's turn about the normal and the common level. A warm step perturbs them.
+struct BuildParams
+{
+	Pose3 poseA;
+	Vec3 rayA, rayB;
+	double turn = 0.0, level = 1.0;
+};
+
+BuildParams DrawBuild(Random& rng, const SuperellipsoidShape& a, double C)
+{
+	BuildParams q;
+	q.poseA = Pose3(Vec3(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)) * a.BoundingRadius(), rng.Rotation());
+	q.rayA = rng.Unit();
+	q.rayB = rng.Unit();
+	q.turn = rng.Uniform(-kPi, kPi);
+	q.level = C;
+	return q;
+}
+
+// A small motion of a built pair, as between two steps of a simulation: everything turns or moves
+// by about `delta` (radians, or relative to the size); the level by at most `levelDelta` relative.
+BuildParams Perturb(Random& rng, BuildParams q, double size, double delta, double levelDelta)
+{
+	q.poseA = Pose3(q.poseA.p + delta * size * rng.Unit(), Normalize(AxisAngle(rng.Unit(), delta) * q.poseA.q));
+	q.rayA = Normalize(q.rayA + delta * rng.Unit());
+	q.rayB = Normalize(q.rayB + delta * rng.Unit());
+	q.turn += delta * rng.Uniform(-1, 1);
+	q.level *= 1.0 + levelDelta * rng.Uniform(-1, 1);
+	return q;
+}
+
 // A pair built with common level C at the world point X, A's outward normal n there.
 struct Built
 {
@@ -128,21 +174,21 @@ struct Built
 	Vec3 point, normal;
 };
 
-Built Build(Random& rng, std::shared_ptr<SuperellipsoidShape> a, std::shared_ptr<SuperellipsoidShape> b, double C)
+Built Build(std::shared_ptr<SuperellipsoidShape> a, std::shared_ptr<SuperellipsoidShape> b, const BuildParams& q)
 {
 	Built p;
 	p.a = std::move(a);
 	p.b = std::move(b);
-	p.level = C;
-	p.pa = Pose3(Vec3(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)) * p.a->BoundingRadius(), rng.Rotation());
-	const Vec3 xa = p.a->PointOnRay(rng.Unit(), C);
+	p.level = q.level;
+	p.pa = q.poseA;
+	const Vec3 xa = p.a->PointOnRay(q.rayA, q.level);
 	p.point = ToWorld(p.pa, xa);
 	p.normal = Normalize(Rotate(p.pa.q, p.a->Gradient(xa)));
-	const Vec3 xb = p.b->PointOnRay(rng.Unit(), C);
+	const Vec3 xb = p.b->PointOnRay(q.rayB, q.level);
 	const Vec3 nb = Normalize(p.b->Gradient(xb));
-	// B's outward normal at xb onto −n, then a random turn about −n.
-	const Quat q = Normalize(AxisAngle(-p.normal, rng.Uniform(-kPi, kPi)) * Arc(nb, -p.normal));
-	p.pb = Pose3(p.point - Rotate(q, xb), q);
+	// B's outward normal at xb onto −n, then a turn about −n.
+	const Quat rot = Normalize(AxisAngle(-p.normal, q.turn) * Arc(nb, -p.normal));
+	p.pb = Pose3(p.point - Rotate(rot, xb), rot);
 	return p;
 }
 
@@ -213,11 +259,12 @@ bool Basic(Tally& t, const ContactResult3& c)
 }
 
 // The automatic contact, timed, with Basic's checks; a failing one becomes the category's worst.
-bool Solve(Tally& t, const SuperellipsoidShape& a, const Pose3& pa, const SuperellipsoidShape& b, const Pose3& pb, ContactResult3& c)
+bool Solve(Tally& t, const SuperellipsoidShape& a, const Pose3& pa, const SuperellipsoidShape& b, const Pose3& pb, ContactResult3& c,
+           WarmStart3* warm = nullptr)
 {
 	// The thread's CPU time, which other work on the machine does not inflate.
 	const double start = bench::ThreadCpuNanoseconds();
-	c = ComputeContact(a, pa, b, pb);
+	c = ComputeContact(a, pa, b, pb, MethodChoice::automatic, {}, warm);
 	const double spent = 1e-9 * (bench::ThreadCpuNanoseconds() - start);
 	t.seconds += spent;
 	t.methodSeconds[MethodName(c.method)] += spent;
@@ -231,8 +278,76 @@ bool Solve(Tally& t, const SuperellipsoidShape& a, const Pose3& pa, const Supere
 	return false;
 }
 
-void Errors(Tally& t, double level, double point, double normal, const Json& which)
+// What a user needs to know about one group of configurations (in range, beyond it, warm
+// starts): failures, wrong verdicts, and answers reported as converged that are not solutions
+// (level off by more than 1e-9 relative, normal by more than 1e-6 rad), with the worst errors.
+struct Headline
 {
+	long configurations = 0, failed = 0, nonFinite = 0, wrongVerdicts = 0, checked = 0, wrongLevels = 0, wrongNormals = 0;
+	long flat = 0; // flat contacts: the point is not determined (level and normal still checked)
+	double worstLevel = 0.0, worstPoint = 0.0, worstNormal = 0.0;
+	Json worstLevelCase, worstNormalCase;
+
+	// The failure counts a configuration added to its category's tally.
+	void CountOutcome(const Tally& before, const Tally& after)
+	{
+		++configurations;
+		failed += after.failed - before.failed;
+		nonFinite += after.nonFinite - before.nonFinite;
+		wrongVerdicts += after.wrongVerdict - before.wrongVerdict;
+	}
+
+	void CountErrors(double level, double point, double normal, bool isFlat, const Json& which)
+	{
+		++checked;
+		flat += isFlat ? 1 : 0;
+		if (level > 1e-9)
+			++wrongLevels;
+		if (normal > 1e-6)
+			++wrongNormals;
+		if (level > worstLevel)
+		{
+			worstLevel = level;
+			worstLevelCase = which;
+		}
+		if (normal > worstNormal)
+		{
+			worstNormal = normal;
+			worstNormalCase = which;
+		}
+		if (!isFlat)
+			worstPoint = std::max(worstPoint, point);
+	}
+
+	Json ToJson() const
+	{
+		return {{"configurations", configurations},
+		        {"failed", failed},
+		        {"non_finite", nonFinite},
+		        {"wrong_verdicts", wrongVerdicts},
+		        {"checked", checked},
+		        {"wrong_levels_beyond_1e-9", wrongLevels},
+		        {"wrong_normals_beyond_1e-6_rad", wrongNormals},
+		        {"flat_contacts_point_not_determined", flat},
+		        {"max_level_error", worstLevel},
+		        {"max_point_error_where_determined", worstPoint},
+		        {"max_normal_error", worstNormal},
+		        {"worst_level_case", worstLevelCase},
+		        {"worst_normal_case", worstNormalCase}};
+	}
+
+	bool Clean() const { return failed + nonFinite + wrongVerdicts + wrongLevels + wrongNormals == 0; }
+};
+
+// A centre inside the other particle (or on its surface): beyond the range the headline covers.
+bool CentreInside(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb)
+{
+	return a.Level(ToBody(pa, pb.p)) <= a.SurfaceLevel() || b.Level(ToBody(pb, pa.p)) <= b.SurfaceLevel();
+}
+
+void Errors(Tally& t, Headline& h, double level, double point, double normal, bool flat, const Json& which)
+{
+	h.CountErrors(level, point, normal, flat, which);
 	++t.checked;
 	t.worstLevel = std::max(t.worstLevel, level);
 	t.worstPoint = std::max(t.worstPoint, point);
@@ -246,6 +361,153 @@ void Errors(Tally& t, double level, double point, double normal, const Json& whi
 		t.worstCase = which;
 	}
 }
+// A built pair's answer against its construction: level, point (where the equations determine
+// it) and normal.
+void CheckBuilt(Tally& t, Headline& h, const Built& p, const ContactResult3& c)
+{
+	const double size = 0.5 * (p.a->BoundingRadius() + p.b->BoundingRadius());
+	Json which = CaseJson(*p.a, p.pa, *p.b, p.pb, c);
+	which["exact_level"] = p.level;
+	which["exact_point"] = VecJson(p.point);
+	const double levelError = std::fabs(c.level - p.level) / p.level, pointError = Distance(c.point, p.point) / size;
+	const double normalError = Angle(c.normal, p.normal);
+	if (PointUncertainty(p) > 1e-9 * size)
+	{
+		// A flat contact: its level and normal are checked, its point only as far as it is determined.
+		++t.flat;
+		t.flatLevel = std::max(t.flatLevel, levelError);
+		t.flatPoint = std::max(t.flatPoint, pointError);
+		Errors(t, h, levelError, 0.0, normalError, true, which);
+	}
+	else
+		Errors(t, h, levelError, pointError, normalError, false, which);
+}
+
+// The run's state: the random streams, a tally per category (cold and warm), the headlines.
+struct Stress
+{
+	Random rng, warmRng;
+	std::vector<Tally> tallies = std::vector<Tally>(int(Category::count)), warmTallies = std::vector<Tally>(int(Category::count));
+	Headline inRange, beyondRange, warmInRange, warmBeyondRange;
+
+	// The warm motions draw from their own stream, so the cold pairs are those of a run without them.
+	explicit Stress(std::uint64_t seed) : rng{std::mt19937_64(seed)}, warmRng{std::mt19937_64(seed ^ 0x9e3779b97f4a7c15ull)} {}
+
+	// Pairs without a built answer: the same pose, one centre, or a random pose (long-double check).
+	void Unbuilt(Category cat, double scale, const std::shared_ptr<SuperellipsoidShape>& a, const std::shared_ptr<SuperellipsoidShape>& b)
+	{
+		Tally& t = tallies[int(cat)];
+		const Tally before = t;
+		const Pose3 pa(scale * Vec3(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)), rng.Rotation());
+		Pose3 pb = cat == Category::identicalPose ? pa : Pose3(pa.p, rng.Rotation());
+		if (cat == Category::random)
+			pb.p = pa.p + rng.Uniform(0.05, 2.0) * (a->BoundingRadius() + b->BoundingRadius()) * rng.Unit();
+		Headline& h = CentreInside(*a, pa, *b, pb) ? beyondRange : inRange;
+		ContactResult3 c;
+		const bool solved = Solve(t, *a, pa, *b, pb, c);
+		if (solved && cat != Category::random)
+		{
+			// No level point: the overlap axis, touching, the points on their surfaces.
+			const bool sane = c.touching && c.separation < 0.0 && std::fabs(a->Level(ToBody(pa, c.pointA)) - 1.0) < 1e-9 &&
+			                  std::fabs(b->Level(ToBody(pb, c.pointB)) - 1.0) < 1e-9;
+			if (!sane)
+				++t.wrongVerdict;
+		}
+		h.CountOutcome(before, t);
+		if (!solved || cat != Category::random)
+			return;
+		// The long-double polish of the equations from the answer.
+		const r3::Shape A(*a), B(*b);
+		const r3::Pose la(pa), lb(pb);
+		const r3::V3 X = r3::From(c.point);
+		const r3::V3 ga = la.Rotate(A.Gradient(la.ToBody(X))), gb = lb.Rotate(B.Gradient(lb.ToBody(X)));
+		r3::LD residual = 0.0L;
+		const r3::SurfaceMinimum m = r3::Polish(A, la, B, lb, X, -r3::Dot(ga, gb) / r3::Dot(gb, gb), &residual);
+		const double size = 0.5 * (a->BoundingRadius() + b->BoundingRadius());
+		const double levelError = double(std::fabs((c.level - m.level) / m.level)), pointError = double(r3::Dist(c.point, m.point)) / size;
+		if (m.level < 1e-9L)
+		{
+			// Centres within a hair of each other (in the levels' measure): ill-posed, apart.
+			++t.flat;
+			t.flatLevel = std::max(t.flatLevel, levelError);
+			t.flatPoint = std::max(t.flatPoint, pointError);
+			return;
+		}
+		const Vec3 exactNormal = r3::ToVec(r3::Unit(la.Rotate(A.Gradient(la.ToBody(m.point)))));
+		Errors(t, h, levelError, pointError, Angle(c.normal, exactNormal), false, CaseJson(*a, pa, *b, pb, c));
+	}
+
+	// A pair built with a known answer, solved cold, then warm after each of kWarmSteps small
+	// motions (as the Box2D adapter keeps a contact's warm start from step to step).
+	void BuiltPair(Category cat, const std::shared_ptr<SuperellipsoidShape>& a, const std::shared_ptr<SuperellipsoidShape>& b)
+	{
+		Tally& t = tallies[int(cat)];
+		const Tally before = t;
+		double C = 1.0;
+		if (cat == Category::built || cat == Category::identical)
+			C = rng.LogUniform(1e-3, 1e3);
+		else if (cat == Category::nearTangent)
+			C = 1.0 + rng.Uniform(-1e-9, 1e-9);
+		else
+			C = rng.LogUniform(1e-6, 1e-2);
+		BuildParams params = DrawBuild(rng, *a, C);
+		const Built p = Build(a, b, params);
+		Headline& h = CentreInside(*p.a, p.pa, *p.b, p.pb) ? beyondRange : inRange;
+		ContactResult3 c;
+		const bool solved = Solve(t, *p.a, p.pa, *p.b, p.pb, c);
+		if (solved && (C <= 1.0) != c.touching && std::fabs(C - 1.0) > 1e-13)
+			++t.wrongVerdict;
+		h.CountOutcome(before, t);
+		if (!solved)
+			return;
+		CheckBuilt(t, h, p, c);
+		WarmStart3 warm;
+		ComputeContact(*p.a, p.pa, *p.b, p.pb, MethodChoice::automatic, {}, &warm);
+		const double size = 0.5 * (p.a->BoundingRadius() + p.b->BoundingRadius());
+		Tally& tw = warmTallies[int(cat)];
+		for (int step = 0; step < kWarmSteps; ++step)
+		{
+			const double delta = warmRng.LogUniform(1e-6, 1e-2);
+			params = Perturb(warmRng, params, size, delta, cat == Category::nearTangent ? 1e-10 : delta);
+			const Built q = Build(a, b, params);
+			Headline& hw = CentreInside(*q.a, q.pa, *q.b, q.pb) ? warmBeyondRange : warmInRange;
+			const Tally warmBefore = tw;
+			ContactResult3 cw;
+			const bool ok = Solve(tw, *q.a, q.pa, *q.b, q.pb, cw, &warm);
+			if (ok && (q.level <= 1.0) != cw.touching && std::fabs(q.level - 1.0) > 1e-13)
+				++tw.wrongVerdict;
+			hw.CountOutcome(warmBefore, tw);
+			if (!ok)
+				return;
+			CheckBuilt(tw, hw, q, cw);
+		}
+	}
+};
+
+Json TallyJson(const Tally& t)
+{
+	Json perMethod = Json::object();
+	for (const auto& [name, n] : t.methods)
+		perMethod[name] = 1e6 * t.methodSeconds.at(name) / double(n);
+	return {{"configurations", t.configurations},
+	        {"converged", t.converged},
+	        {"converged_after_fallback", t.fallback},
+	        {"failed", t.failed},
+	        {"non_finite", t.nonFinite},
+	        {"wrong_verdict", t.wrongVerdict},
+	        {"checked", t.checked},
+	        {"inaccurate_beyond_1e-9", t.inaccurate},
+	        {"max_level_error", t.worstLevel},
+	        {"max_point_error", t.worstPoint},
+	        {"max_normal_error", t.worstNormal},
+	        {"ill_conditioned", t.flat},
+	        {"ill_conditioned_max_level_error", t.flatLevel},
+	        {"ill_conditioned_max_point_error", t.flatPoint},
+	        {"mean_contact_us", 1e6 * t.seconds / std::max(1L, t.configurations)},
+	        {"answers_by_method", t.methods},
+	        {"mean_us_by_method", perMethod},
+	        {"worst_case", t.worstCase}};
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -256,8 +518,7 @@ int main(int argc, char** argv)
 	        demo::WholeNumber(1, 1e9));
 	const demo::DemoOptions opt = cli.Parse(argc, argv);
 	demo::Progress progress("b2a_stress3d");
-	Random rng{std::mt19937_64(opt.seed)};
-	std::vector<Tally> tallies(int(Category::count));
+	Stress run(std::uint64_t(opt.seed));
 	const auto start = std::chrono::steady_clock::now();
 	for (long k = 0; k < count; ++k)
 	{
@@ -269,128 +530,57 @@ int main(int argc, char** argv)
 		                     : roll < 16 ? Category::identicalPose
 		                     : roll < 17 ? Category::coincident
 		                                 : Category::random;
-		Tally& t = tallies[int(cat)];
-		const double scale = rng.LogUniform(1e-3, 1e3);
-		auto a = RandomShape(rng, scale);
-		auto b = cat == Category::identical || cat == Category::identicalPose ? a : RandomShape(rng, scale * rng.LogUniform(0.1, 10.0));
+		const double scale = run.rng.LogUniform(1e-3, 1e3);
+		auto a = RandomShape(run.rng, scale);
+		auto b = cat == Category::identical || cat == Category::identicalPose ? a
+		                                                                      : RandomShape(run.rng, scale * run.rng.LogUniform(0.1, 10.0));
 		if (cat == Category::identicalPose || cat == Category::coincident || cat == Category::random)
-		{
-			const Pose3 pa(scale * Vec3(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)), rng.Rotation());
-			Pose3 pb = cat == Category::identicalPose ? pa : Pose3(pa.p, rng.Rotation());
-			if (cat == Category::random)
-				pb.p = pa.p + rng.Uniform(0.05, 2.0) * (a->BoundingRadius() + b->BoundingRadius()) * rng.Unit();
-			ContactResult3 c;
-			if (!Solve(t, *a, pa, *b, pb, c))
-				continue;
-			if (cat != Category::random)
-			{
-				// No level point: the overlap axis, touching, the points on their surfaces.
-				const bool sane = c.touching && c.separation < 0.0 && std::fabs(a->Level(ToBody(pa, c.pointA)) - 1.0) < 1e-9 &&
-				                  std::fabs(b->Level(ToBody(pb, c.pointB)) - 1.0) < 1e-9;
-				if (!sane)
-					++t.wrongVerdict;
-				continue;
-			}
-			// The long-double polish of the equations from the answer.
-			const r3::Shape A(*a), B(*b);
-			const r3::Pose la(pa), lb(pb);
-			const r3::V3 X = r3::From(c.point);
-			const r3::V3 ga = la.Rotate(A.Gradient(la.ToBody(X))), gb = lb.Rotate(B.Gradient(lb.ToBody(X)));
-			r3::LD residual = 0.0L;
-			const r3::SurfaceMinimum m = r3::Polish(A, la, B, lb, X, -r3::Dot(ga, gb) / r3::Dot(gb, gb), &residual);
-			const double size = 0.5 * (a->BoundingRadius() + b->BoundingRadius());
-			const double levelError = double(std::fabs((c.level - m.level) / m.level)), pointError = double(r3::Dist(c.point, m.point)) / size;
-			if (m.level < 1e-9L)
-			{
-				// Centres within a hair of each other (in the levels' measure): ill-posed, apart.
-				++t.flat;
-				t.flatLevel = std::max(t.flatLevel, levelError);
-				t.flatPoint = std::max(t.flatPoint, pointError);
-				continue;
-			}
-			Errors(t, levelError, pointError, 0.0, CaseJson(*a, pa, *b, pb, c));
-			continue;
-		}
-		double C = 1.0;
-		if (cat == Category::built || cat == Category::identical)
-			C = rng.LogUniform(1e-3, 1e3);
-		else if (cat == Category::nearTangent)
-			C = 1.0 + rng.Uniform(-1e-9, 1e-9);
+			run.Unbuilt(cat, scale, a, b);
 		else
-			C = rng.LogUniform(1e-6, 1e-2);
-		const Built p = Build(rng, a, b, C);
-		ContactResult3 c;
-		if (!Solve(t, *p.a, p.pa, *p.b, p.pb, c))
-			continue;
-		const double size = 0.5 * (p.a->BoundingRadius() + p.b->BoundingRadius());
-		if ((C <= 1.0) != c.touching && std::fabs(C - 1.0) > 1e-13)
-			++t.wrongVerdict;
-		Json which = CaseJson(*p.a, p.pa, *p.b, p.pb, c);
-		which["exact_level"] = C;
-		which["exact_point"] = VecJson(p.point);
-		const double levelError = std::fabs(c.level - C) / C, pointError = Distance(c.point, p.point) / size;
-		if (PointUncertainty(p) > 1e-9 * size)
-		{
-			// A flat contact: its level is checked, its point only as far as it is determined.
-			++t.flat;
-			t.flatLevel = std::max(t.flatLevel, levelError);
-			t.flatPoint = std::max(t.flatPoint, pointError);
-			Errors(t, levelError, 0.0, 0.0, which);
-		}
-		else
-			Errors(t, levelError, pointError, Angle(c.normal, p.normal), which);
+			run.BuiltPair(cat, a, b);
 		if (k % 4096 == 0)
 			progress.Report(double(k) / count, CategoryName(cat));
 	}
-	Json categories = Json::object();
+	Json categories = Json::object(), warmCategories = Json::object();
 	long bad = 0, total = 0, inaccurate = 0;
 	double solveSeconds = 0.0;
 	for (int i = 0; i < int(Category::count); ++i)
 	{
-		const Tally& t = tallies[i];
-		bad += t.failed + t.nonFinite + t.wrongVerdict;
+		const Tally &t = run.tallies[i], &tw = run.warmTallies[i];
+		bad += t.failed + t.nonFinite + t.wrongVerdict + tw.failed + tw.nonFinite + tw.wrongVerdict;
 		total += t.configurations;
 		inaccurate += t.inaccurate;
 		solveSeconds += t.seconds;
-		categories[CategoryName(Category(i))] = {{"configurations", t.configurations},
-		                                         {"converged", t.converged},
-		                                         {"converged_after_fallback", t.fallback},
-		                                         {"failed", t.failed},
-		                                         {"non_finite", t.nonFinite},
-		                                         {"wrong_verdict", t.wrongVerdict},
-		                                         {"checked", t.checked},
-		                                         {"inaccurate_beyond_1e-9", t.inaccurate},
-		                                         {"max_level_error", t.worstLevel},
-		                                         {"max_point_error", t.worstPoint},
-		                                         {"max_normal_error", t.worstNormal},
-		                                         {"ill_conditioned", t.flat},
-		                                         {"ill_conditioned_max_level_error", t.flatLevel},
-		                                         {"ill_conditioned_max_point_error", t.flatPoint},
-		                                         {"mean_contact_us", 1e6 * t.seconds / std::max(1L, t.configurations)},
-		                                         {"answers_by_method", t.methods},
-		                                         {"mean_us_by_method", [&t] {
-			                                          Json m = Json::object();
-			                                          for (const auto& [name, n] : t.methods)
-				                                          m[name] = 1e6 * t.methodSeconds.at(name) / double(n);
-			                                          return m;
-		                                          }()},
-		                                         {"worst_case", t.worstCase}};
+		categories[CategoryName(Category(i))] = TallyJson(t);
+		if (tw.configurations > 0)
+			warmCategories[CategoryName(Category(i))] = TallyJson(tw);
 	}
 	const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 	Json summary = {{"program", "b2a_stress3d"},
 	                {"configurations", total},
 	                {"seed", opt.seed},
+	                {"in_range", run.inRange.ToJson()},
+	                {"beyond_range_centre_inside", run.beyondRange.ToJson()},
+	                {"warm_in_range", run.warmInRange.ToJson()},
+	                {"warm_beyond_range_centre_inside", run.warmBeyondRange.ToJson()},
 	                {"failed_nonfinite_or_wrong", bad},
 	                {"inaccurate_beyond_1e-9", inaccurate},
 	                {"errors", "level: relative; point: relative to the pair's size (mean bounding radius); normal: radians"},
 	                {"categories", categories},
+	                {"warm_categories", warmCategories},
 	                {"solve_seconds", solveSeconds},
 	                {"run_seconds", seconds},
 	                {"machine", bench::MachineJson(bench::GetMachineInfo())}};
 	demo::WriteJson(opt.out + "/stress3d_summary.json", summary);
 	progress.Report(1.0, "done");
-	std::printf("b2a_stress3d: %ld configurations, %ld failed, non-finite or wrong, %ld inaccurate beyond 1e-9, %.1f us a contact; "
-	            "summary in %s/stress3d_summary.json\n",
-	            total, bad, inaccurate, 1e6 * solveSeconds / std::max(1L, total), opt.out.c_str());
-	return bad == 0 ? 0 : 1;
+	const Headline& in = run.inRange;
+	const Headline& warm = run.warmInRange;
+	std::printf("b2a_stress3d: %ld configurations; in range %ld: %ld failed, %ld non-finite, %ld wrong verdicts, %ld wrong levels, "
+	            "%ld wrong normals; warm %ld: %ld failed, %ld wrong verdicts, %ld wrong levels, %ld wrong normals; beyond range %ld: "
+	            "%ld failed or wrong verdicts; %.1f us a contact; summary in %s/stress3d_summary.json\n",
+	            total, in.configurations, in.failed, in.nonFinite, in.wrongVerdicts, in.wrongLevels, in.wrongNormals,
+	            warm.configurations, warm.failed + warm.nonFinite, warm.wrongVerdicts, warm.wrongLevels, warm.wrongNormals,
+	            run.beyondRange.configurations, run.beyondRange.failed + run.beyondRange.nonFinite + run.beyondRange.wrongVerdicts,
+	            1e6 * solveSeconds / std::max(1L, total), opt.out.c_str());
+	return bad == 0 && in.Clean() && warm.Clean() ? 0 : 1;
 }
