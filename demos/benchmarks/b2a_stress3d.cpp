@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <random>
 #include <string>
@@ -286,7 +287,7 @@ struct Headline
 	long configurations = 0, failed = 0, nonFinite = 0, wrongVerdicts = 0, checked = 0, wrongLevels = 0, wrongNormals = 0;
 	long flat = 0; // flat contacts: the point is not determined (level and normal still checked)
 	double worstLevel = 0.0, worstPoint = 0.0, worstNormal = 0.0;
-	Json worstLevelCase, worstNormalCase;
+	Json worstLevelCase, worstNormalCase, wrongVerdictCase;
 
 	// The failure counts a configuration added to its category's tally.
 	void CountOutcome(const Tally& before, const Tally& after)
@@ -333,7 +334,8 @@ struct Headline
 		        {"max_point_error_where_determined", worstPoint},
 		        {"max_normal_error", worstNormal},
 		        {"worst_level_case", worstLevelCase},
-		        {"worst_normal_case", worstNormalCase}};
+		        {"worst_normal_case", worstNormalCase},
+		        {"a_wrong_verdict_case", wrongVerdictCase}};
 	}
 
 	bool Clean() const { return failed + nonFinite + wrongVerdicts + wrongLevels + wrongNormals == 0; }
@@ -361,14 +363,33 @@ void Errors(Tally& t, Headline& h, double level, double point, double normal, bo
 		t.worstCase = which;
 	}
 }
+// The touching verdict against a built pair's level. Within rounding of tangency either verdict
+// is right: the world coordinates, up to `reach`, are rounded to eps·reach, which moves a level by
+// eps·reach·|∇λ|; as in b2a_stress, a verdict is judged only where |C − 1| exceeds 1e3 times that.
+bool WrongVerdict(const Built& p, const ContactResult3& c)
+{
+	if ((p.level <= 1.0) == c.touching)
+		return false;
+	const double reach = std::max({Length(p.point), Length(p.pa.p), Length(p.pb.p)});
+	const double slope = std::max(Length(p.a->Gradient(ToBody(p.pa, p.point))), Length(p.b->Gradient(ToBody(p.pb, p.point))));
+	return std::fabs(p.level - 1.0) > 1e3 * std::numeric_limits<double>::epsilon() * reach * slope;
+}
+
+// A built pair's case with its known answer.
+Json CaseWithAnswer(const Built& p, const ContactResult3& c)
+{
+	Json which = CaseJson(*p.a, p.pa, *p.b, p.pb, c);
+	which["exact_level"] = p.level;
+	which["exact_point"] = VecJson(p.point);
+	return which;
+}
+
 // A built pair's answer against its construction: level, point (where the equations determine
 // it) and normal.
 void CheckBuilt(Tally& t, Headline& h, const Built& p, const ContactResult3& c)
 {
 	const double size = 0.5 * (p.a->BoundingRadius() + p.b->BoundingRadius());
-	Json which = CaseJson(*p.a, p.pa, *p.b, p.pb, c);
-	which["exact_level"] = p.level;
-	which["exact_point"] = VecJson(p.point);
+	const Json which = CaseWithAnswer(p, c);
 	const double levelError = std::fabs(c.level - p.level) / p.level, pointError = Distance(c.point, p.point) / size;
 	const double normalError = Angle(c.normal, p.normal);
 	if (PointUncertainty(p) > 1e-9 * size)
@@ -455,8 +476,11 @@ struct Stress
 		Headline& h = CentreInside(*p.a, p.pa, *p.b, p.pb) ? beyondRange : inRange;
 		ContactResult3 c;
 		const bool solved = Solve(t, *p.a, p.pa, *p.b, p.pb, c);
-		if (solved && (C <= 1.0) != c.touching && std::fabs(C - 1.0) > 1e-13)
+		if (solved && WrongVerdict(p, c))
+		{
 			++t.wrongVerdict;
+			h.wrongVerdictCase = CaseWithAnswer(p, c);
+		}
 		h.CountOutcome(before, t);
 		if (!solved)
 			return;
@@ -474,8 +498,11 @@ struct Stress
 			const Tally warmBefore = tw;
 			ContactResult3 cw;
 			const bool ok = Solve(tw, *q.a, q.pa, *q.b, q.pb, cw, &warm);
-			if (ok && (q.level <= 1.0) != cw.touching && std::fabs(q.level - 1.0) > 1e-13)
+			if (ok && WrongVerdict(q, cw))
+			{
 				++tw.wrongVerdict;
+				hw.wrongVerdictCase = CaseWithAnswer(q, cw);
+			}
 			hw.CountOutcome(warmBefore, tw);
 			if (!ok)
 				return;
