@@ -1,0 +1,242 @@
+// b2analytic: the parts of two particles' overlap, for non-convex pairs' manifolds.
+#include "contact/OverlapParts.h"
+
+#include "contact/SampleRuns.h"
+#include "numerics/RootFinding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace b2a
+{
+
+namespace
+{
+// Scratch of one call: on the stack for the usual sample counts (two heap allocations a call
+// cost a tenth as much as the levels they held).
+struct Scratch
+{
+	static constexpr int kStack = 512;
+	Vec2 xStack[kStack];
+	double levelStack[kStack], gatheredStack[kStack];
+	int indexStack[kStack];
+	bool keepStack[kStack];
+	std::vector<Vec2> xHeap;
+	std::vector<double> levelHeap, gatheredHeap;
+	std::vector<int> indexHeap;
+	std::unique_ptr<bool[]> keepHeap;
+	Vec2* x = xStack;                  // places to evaluate (outer's body frame)
+	double* level = levelStack;        // per sample
+	double* gathered = gatheredStack;  // per place
+	int* index = indexStack;           // the sample of each place
+	bool* keep = keepStack;            // per sample: evaluated
+	explicit Scratch(int n)
+	{
+		if (n <= kStack)
+			return;
+		xHeap.resize(size_t(n));
+		levelHeap.resize(size_t(n));
+		gatheredHeap.resize(size_t(n));
+		indexHeap.resize(size_t(n));
+		keepHeap.reset(new bool[size_t(n)]);
+		x = xHeap.data();
+		level = levelHeap.data();
+		gathered = gatheredHeap.data();
+		index = indexHeap.data();
+		keep = keepHeap.get();
+	}
+};
+
+// Marks (keep[k] = true) the samples of every run over whose disc outer's level bound lies
+// below its surface level: only they can be inside outer. Groups of runs first, as the grid
+// method bounds them. Every sample where the shape has no bounds.
+void MarkReachable(const Shape& outer, const Pose& rel, const SampleRuns& runs, bool fast, bool* keep)
+{
+	const int n = runs.samples->Count();
+	const LevelBounds* bounds = fast ? outer.Bounds() : nullptr;
+	if (!bounds)
+	{
+		std::fill(keep, keep + n, true);
+		return;
+	}
+	std::fill(keep, keep + n, false);
+	const double surface = outer.SurfaceLevel();
+	const int groups = int(runs.groupCentre.size()), runCount = int(runs.runCentre.size());
+	constexpr int kMaxDiscs = 64;
+	Vec2 centres[kMaxDiscs];
+	double radii[kMaxDiscs], lower[kMaxDiscs];
+	int runOf[kMaxDiscs];
+	// (Counts beyond the discs' scratch: every sample, as without bounds.)
+	if (groups > kMaxDiscs || runCount > kMaxDiscs)
+	{
+		std::fill(keep, keep + n, true);
+		return;
+	}
+	for (int g = 0; g < groups; ++g)
+	{
+		centres[g] = ToWorld(rel, runs.groupCentre[size_t(g)]);
+		radii[g] = runs.groupRadius[size_t(g)];
+	}
+	bounds->LevelLowerBounds(centres, radii, groups, lower);
+	int m = 0;
+	for (int g = 0; g < groups; ++g)
+	{
+		if (lower[g] >= surface)
+			continue;
+		const int last = std::min((g + 1) * SampleRuns::kGroupRuns, runCount);
+		for (int r = g * SampleRuns::kGroupRuns; r < last; ++r)
+			runOf[m++] = r;
+	}
+	for (int j = 0; j < m; ++j)
+	{
+		centres[j] = ToWorld(rel, runs.runCentre[size_t(runOf[j])]);
+		radii[j] = runs.runRadius[size_t(runOf[j])];
+	}
+	bounds->LevelLowerBounds(centres, radii, m, lower);
+	for (int j = 0; j < m; ++j)
+	{
+		if (lower[j] >= surface)
+			continue;
+		const int first = runOf[j] * SampleRuns::kRunLength;
+		const int last = std::min(first + SampleRuns::kRunLength, n);
+		for (int k = first; k <= last; ++k)
+			keep[k % n] = true;
+	}
+}
+
+// Whether every point of inner's surface between sample k's neighbours (body frame) lies within
+// `within` of p: the samples' distances, plus the arcs' measured deviation from their chords
+// (taken four times over: the grid's discs take it twice) and the rounding of two poses.
+bool SurelyWithin(const SurfaceSamples& s, int k, Vec2 p, double within, double size)
+{
+	const int n = s.Count();
+	const int before = (k + n - 1) % n, after = (k + 1) % n;
+	const double far = std::max({Distance(s.point[size_t(before)], p), Distance(s.point[size_t(k)], p),
+	                             Distance(s.point[size_t(after)], p)});
+	const double deviation = std::max(s.arcDeviation[size_t(before)], s.arcDeviation[size_t(k)]);
+	return far + 4.0 * deviation + 1e-9 * size <= within;
+}
+} // namespace
+
+int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const Pose& pi, bool outerIsA, OverlapPart* out, int max,
+                 const OverlapSkip* skip, bool fast)
+{
+	const SampleRuns& runs = SampleRunsOf(inner, Shape::kDefaultSampleCount);
+	const SurfaceSamples& samples = *runs.samples;
+	const int n = samples.Count();
+	const Pose rel = Relative(po, pi); // inner's body to outer's body
+	Scratch scratch(n);
+	double* level = scratch.level;
+	MarkReachable(outer, rel, runs, fast, scratch.keep);
+	int m = 0;
+	for (int i = 0; i < n; ++i)
+	{
+		level[i] = std::numeric_limits<double>::infinity();
+		if (scratch.keep[i])
+		{
+			scratch.x[m] = ToWorld(rel, samples.point[size_t(i)]);
+			scratch.index[m++] = i;
+		}
+	}
+	outer.Levels(scratch.x, m, scratch.gathered);
+	for (int j = 0; j < m; ++j)
+		level[scratch.index[j]] = scratch.gathered[j];
+	// (Only an evaluated sample can be inside, and the places were gathered in increasing order
+	// of their samples: the loops below run over them alone.)
+	const double surface = outer.SurfaceLevel();
+	auto inside = [&](int i) { return level[i] < surface; };
+	int start = -1;
+	for (int i = 0; i < n && start < 0; ++i)
+		if (!inside(i))
+			start = i;
+	if (start < 0)
+		return 0;
+	// Every local minimum of the level along a run is a part: a long run (a lobe lying along the
+	// other's side) has one at either end, and the contact, warm-started, at either; with the
+	// run's deepest sample alone, the part at the contact's end was its own, and the manifold
+	// had two points one step and one the next. They are taken in order from the sample after
+	// `start`, cyclically (the order decides which of more than `max` stay).
+	int* minima = scratch.index; // (reused: the minima in that order)
+	int candidates = 0;
+	{
+		int first = 0;
+		while (first < m && scratch.index[first] <= start)
+			++first;
+		auto isMinimum = [&](int k) {
+			const double here = level[k];
+			return inside(k) && here <= level[(k + n - 1) % n] && here < level[(k + 1) % n];
+		};
+		int later[Scratch::kStack];
+		std::vector<int> laterHeap;
+		int* wrapped = later;
+		if (n > Scratch::kStack)
+		{
+			laterHeap.resize(size_t(n));
+			wrapped = laterHeap.data();
+		}
+		int wrappedCount = 0;
+		for (int j = 0; j < first; ++j)
+			if (isMinimum(scratch.index[j]))
+				wrapped[wrappedCount++] = scratch.index[j];
+		for (int j = first; j < m; ++j)
+			if (isMinimum(scratch.index[j]))
+				minima[candidates++] = scratch.index[j];
+		for (int j = 0; j < wrappedCount; ++j)
+			minima[candidates++] = wrapped[j];
+	}
+	const bool mayskip = fast && skip && candidates <= max;
+	const Vec2 skipPoint = mayskip ? ToBody(pi, skip->point) : Vec2();
+	int found = 0;
+	for (int j = 0; j < candidates; ++j)
+	{
+		const int deepest = minima[j];
+		if (mayskip && SurelyWithin(samples, deepest, skipPoint, skip->within, inner.BoundingRadius()))
+			continue; // the caller's own part, discarded there, and taking no other's place
+		double lo, hi;
+		samples.NeighbourAngles(deepest, lo, hi);
+		auto levelAt = [&](double theta) { return outer.Level(ToWorld(rel, inner.SurfacePoint(theta))); };
+		const ScalarResult mb = MinimizeBrent(levelAt, lo, hi, 1e-10, 1e-12, 60);
+		const Vec2 q = ToWorld(rel, inner.SurfacePoint(mb.x)); // outer's body frame
+		const Vec2 g = outer.Gradient(q);
+		if (!(mb.fx < surface) || !(LengthSquared(g) > 0.0) || !std::isfinite(LengthSquared(g)))
+			continue;
+		const Vec2 u = Normalize(g);
+		double s = (surface - mb.fx) / Length(g);
+		for (int it = 0; it < 8; ++it)
+		{
+			const LevelDerivatives d = outer.Derivatives(q + s * u);
+			const double slope = Dot(d.gradient, u);
+			if (!(slope > 0.0))
+				break;
+			const double step = (surface - d.value) / slope;
+			s += step;
+			if (std::fabs(step) <= 1e-12 * outer.BoundingRadius())
+				break;
+		}
+		if (!(s > 0.0) || !std::isfinite(s))
+			continue;
+		OverlapPart part;
+		const Vec2 qw = ToWorld(po, q), sw = ToWorld(po, q + s * u), uw = Rotate(po.q, u);
+		part.normal = outerIsA ? uw : -uw;
+		part.pointA = outerIsA ? sw : qw;
+		part.pointB = outerIsA ? qw : sw;
+		part.separation = -s;
+		if (found < max)
+			out[found++] = part;
+		else
+		{
+			int shallowest = 0;
+			for (int j = 1; j < found; ++j)
+				if (out[j].separation > out[shallowest].separation)
+					shallowest = j;
+			if (part.separation < out[shallowest].separation)
+				out[shallowest] = part;
+		}
+	}
+	return found;
+}
+
+} // namespace b2a
