@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <vector>
 
 namespace b2a
@@ -15,45 +14,36 @@ namespace b2a
 
 namespace
 {
-// Scratch of one call: on the stack for the usual sample counts (two heap allocations a call
-// cost a tenth as much as the levels they held).
+// Scratch of one call, kept per thread and grown, never shrunk: neither allocated nor
+// initialised a call (two heap allocations a call cost a tenth as much as the levels they held).
 struct Scratch
 {
-	static constexpr int kStack = 512;
-	Vec2 xStack[kStack];
-	double levelStack[kStack], gatheredStack[kStack];
-	int indexStack[kStack];
-	bool keepStack[kStack];
-	std::vector<Vec2> xHeap;
-	std::vector<double> levelHeap, gatheredHeap;
-	std::vector<int> indexHeap;
-	std::unique_ptr<bool[]> keepHeap;
-	Vec2* x = xStack;                  // places to evaluate (outer's body frame)
-	double* level = levelStack;        // per sample
-	double* gathered = gatheredStack;  // per place
-	int* index = indexStack;           // the sample of each place
-	bool* keep = keepStack;            // per sample: evaluated
-	explicit Scratch(int n)
+	std::vector<Vec2> x;          // places to evaluate (outer's body frame)
+	std::vector<double> level;    // per sample
+	std::vector<double> gathered; // per place
+	std::vector<int> index;       // the sample of each place; then the minima, in order
+	std::vector<int> wrapped;     // minima at or before `start`
+	std::vector<char> keep;       // per sample: evaluated
+	static Scratch& ForThread(int n)
 	{
-		if (n <= kStack)
-			return;
-		xHeap.resize(size_t(n));
-		levelHeap.resize(size_t(n));
-		gatheredHeap.resize(size_t(n));
-		indexHeap.resize(size_t(n));
-		keepHeap.reset(new bool[size_t(n)]);
-		x = xHeap.data();
-		level = levelHeap.data();
-		gathered = gatheredHeap.data();
-		index = indexHeap.data();
-		keep = keepHeap.get();
+		thread_local Scratch s;
+		if (int(s.level.size()) < n)
+		{
+			for (auto* v : {&s.level, &s.gathered})
+				v->resize(size_t(n));
+			s.x.resize(size_t(n));
+			s.index.resize(size_t(n));
+			s.wrapped.resize(size_t(n));
+			s.keep.resize(size_t(n));
+		}
+		return s;
 	}
 };
 
 // Marks (keep[k] = true) the samples of every run over whose disc outer's level bound lies
 // below its surface level: only they can be inside outer. Groups of runs first, as the grid
 // method bounds them. Every sample where the shape has no bounds.
-void MarkReachable(const Shape& outer, const Pose& rel, const SampleRuns& runs, bool fast, bool* keep)
+void MarkReachable(const Shape& outer, const Pose& rel, const SampleRuns& runs, bool fast, char* keep)
 {
 	const int n = runs.samples->Count();
 	const LevelBounds* bounds = fast ? outer.Bounds() : nullptr;
@@ -100,6 +90,13 @@ void MarkReachable(const Shape& outer, const Pose& rel, const SampleRuns& runs, 
 	{
 		if (lower[j] >= surface)
 			continue;
+		// The run's thin box, where its disc did not rule it out (as the grid method's last
+		// look before it evaluates a run).
+		OrientedBox box = runs.runBox[size_t(runOf[j])];
+		box.centre = ToWorld(rel, box.centre);
+		box.axis = Rotate(rel.q, box.axis);
+		if (bounds->TightLevelLowerBound(box) >= surface)
+			continue;
 		const int first = runOf[j] * SampleRuns::kRunLength;
 		const int last = std::min(first + SampleRuns::kRunLength, n);
 		for (int k = first; k <= last; ++k)
@@ -128,9 +125,9 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	const SurfaceSamples& samples = *runs.samples;
 	const int n = samples.Count();
 	const Pose rel = Relative(po, pi); // inner's body to outer's body
-	Scratch scratch(n);
-	double* level = scratch.level;
-	MarkReachable(outer, rel, runs, fast, scratch.keep);
+	Scratch& scratch = Scratch::ForThread(n);
+	double* level = scratch.level.data();
+	MarkReachable(outer, rel, runs, fast, scratch.keep.data());
 	int m = 0;
 	for (int i = 0; i < n; ++i)
 	{
@@ -141,7 +138,7 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 			scratch.index[m++] = i;
 		}
 	}
-	outer.Levels(scratch.x, m, scratch.gathered);
+	outer.Levels(scratch.x.data(), m, scratch.gathered.data());
 	for (int j = 0; j < m; ++j)
 		level[scratch.index[j]] = scratch.gathered[j];
 	// (Only an evaluated sample can be inside, and the places were gathered in increasing order
@@ -159,7 +156,7 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	// run's deepest sample alone, the part at the contact's end was its own, and the manifold
 	// had two points one step and one the next. They are taken in order from the sample after
 	// `start`, cyclically (the order decides which of more than `max` stay).
-	int* minima = scratch.index; // (reused: the minima in that order)
+	int* minima = scratch.index.data(); // (reused: the minima in that order)
 	int candidates = 0;
 	{
 		int first = 0;
@@ -169,14 +166,7 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 			const double here = level[k];
 			return inside(k) && here <= level[(k + n - 1) % n] && here < level[(k + 1) % n];
 		};
-		int later[Scratch::kStack];
-		std::vector<int> laterHeap;
-		int* wrapped = later;
-		if (n > Scratch::kStack)
-		{
-			laterHeap.resize(size_t(n));
-			wrapped = laterHeap.data();
-		}
+		int* wrapped = scratch.wrapped.data();
 		int wrappedCount = 0;
 		for (int j = 0; j < first; ++j)
 			if (isMinimum(scratch.index[j]))
