@@ -23,7 +23,6 @@ struct Scratch
 	std::vector<double> gathered; // per place
 	std::vector<int> index;       // the sample of each place; then the minima, in order
 	std::vector<int> wrapped;     // minima at or before `start`
-	std::vector<char> keep;       // per sample: evaluated
 	static Scratch& ForThread(int n)
 	{
 		thread_local Scratch s;
@@ -34,59 +33,56 @@ struct Scratch
 			s.x.resize(size_t(n));
 			s.index.resize(size_t(n));
 			s.wrapped.resize(size_t(n));
-			s.keep.resize(size_t(n));
 		}
 		return s;
 	}
 };
 
-// Marks (keep[k] = true) the samples of every run over whose disc outer's level bound lies
-// below its surface level: only they can be inside outer. Groups of runs first, as the grid
-// method bounds them. Every sample where the shape has no bounds.
-void MarkReachable(const Shape& outer, const Pose& rel, const SampleRuns& runs, bool fast, char* keep)
+// The samples of every run over which outer's level bounds lie below its surface level, in
+// increasing order, into index (returns their count): only they can be inside outer. Groups of
+// runs first, then each run's disc, then its thin box, as the grid method bounds them. Every
+// sample where the shape has no bounds.
+int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs, bool fast, int* index)
 {
 	const int n = runs.samples->Count();
 	const LevelBounds* bounds = fast ? outer.Bounds() : nullptr;
-	if (!bounds)
-	{
-		std::fill(keep, keep + n, true);
-		return;
-	}
-	std::fill(keep, keep + n, false);
-	const double surface = outer.SurfaceLevel();
 	const int groups = int(runs.groupCentre.size()), runCount = int(runs.runCentre.size());
 	constexpr int kMaxDiscs = 64;
+	// (Counts beyond the discs' scratch: every sample, as without bounds.)
+	if (!bounds || groups > kMaxDiscs || runCount > kMaxDiscs)
+	{
+		for (int i = 0; i < n; ++i)
+			index[i] = i;
+		return n;
+	}
+	const double surface = outer.SurfaceLevel();
 	Vec2 centres[kMaxDiscs];
 	double radii[kMaxDiscs], lower[kMaxDiscs];
 	int runOf[kMaxDiscs];
-	// (Counts beyond the discs' scratch: every sample, as without bounds.)
-	if (groups > kMaxDiscs || runCount > kMaxDiscs)
-	{
-		std::fill(keep, keep + n, true);
-		return;
-	}
 	for (int g = 0; g < groups; ++g)
 	{
 		centres[g] = ToWorld(rel, runs.groupCentre[size_t(g)]);
 		radii[g] = runs.groupRadius[size_t(g)];
 	}
 	bounds->LevelLowerBounds(centres, radii, groups, lower);
-	int m = 0;
+	int candidates = 0;
 	for (int g = 0; g < groups; ++g)
 	{
 		if (lower[g] >= surface)
 			continue;
 		const int last = std::min((g + 1) * SampleRuns::kGroupRuns, runCount);
 		for (int r = g * SampleRuns::kGroupRuns; r < last; ++r)
-			runOf[m++] = r;
+			runOf[candidates++] = r;
 	}
-	for (int j = 0; j < m; ++j)
+	for (int j = 0; j < candidates; ++j)
 	{
 		centres[j] = ToWorld(rel, runs.runCentre[size_t(runOf[j])]);
 		radii[j] = runs.runRadius[size_t(runOf[j])];
 	}
-	bounds->LevelLowerBounds(centres, radii, m, lower);
-	for (int j = 0; j < m; ++j)
+	bounds->LevelLowerBounds(centres, radii, candidates, lower);
+	int m = 0;
+	bool wrapsToZero = false; // the last run's last sample is sample 0
+	for (int j = 0; j < candidates; ++j)
 	{
 		if (lower[j] >= surface)
 			continue;
@@ -97,11 +93,25 @@ void MarkReachable(const Shape& outer, const Pose& rel, const SampleRuns& runs, 
 		box.axis = Rotate(rel.q, box.axis);
 		if (bounds->TightLevelLowerBound(box) >= surface)
 			continue;
+		// Runs come in increasing order and share their end samples: each sample once.
 		const int first = runOf[j] * SampleRuns::kRunLength;
 		const int last = std::min(first + SampleRuns::kRunLength, n);
-		for (int k = first; k <= last; ++k)
-			keep[k % n] = true;
+		for (int k = m > 0 && index[m - 1] >= first ? index[m - 1] + 1 : first; k <= last; ++k)
+		{
+			if (k == n)
+				wrapsToZero = true;
+			else
+				index[m++] = k;
+		}
 	}
+	if (wrapsToZero && !(m > 0 && index[0] == 0))
+	{
+		for (int j = m; j > 0; --j)
+			index[j] = index[j - 1];
+		index[0] = 0;
+		++m;
+	}
+	return m;
 }
 
 // Whether every point of inner's surface between sample k's neighbours (body frame) lies within
@@ -127,17 +137,10 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	const Pose rel = Relative(po, pi); // inner's body to outer's body
 	Scratch& scratch = Scratch::ForThread(n);
 	double* level = scratch.level.data();
-	MarkReachable(outer, rel, runs, fast, scratch.keep.data());
-	int m = 0;
-	for (int i = 0; i < n; ++i)
-	{
-		level[i] = std::numeric_limits<double>::infinity();
-		if (scratch.keep[i])
-		{
-			scratch.x[m] = ToWorld(rel, samples.point[size_t(i)]);
-			scratch.index[m++] = i;
-		}
-	}
+	const int m = ReachableSamples(outer, rel, runs, fast, scratch.index.data());
+	std::fill(level, level + n, std::numeric_limits<double>::infinity());
+	for (int j = 0; j < m; ++j)
+		scratch.x[j] = ToWorld(rel, samples.point[size_t(scratch.index[j])]);
 	outer.Levels(scratch.x.data(), m, scratch.gathered.data());
 	for (int j = 0; j < m; ++j)
 		level[scratch.index[j]] = scratch.gathered[j];
