@@ -19,17 +19,19 @@ namespace
 struct Scratch
 {
 	std::vector<Vec2> x;          // places to evaluate (outer's body frame)
-	std::vector<double> level;    // per sample
+	std::vector<double> level;    // per sample; +∞ between calls (each call resets what it set)
 	std::vector<double> gathered; // per place
 	std::vector<int> index;       // the sample of each place; then the minima, in order
 	std::vector<int> wrapped;     // minima at or before `start`
+	std::vector<int> minima;      // the minima, in order
 	static Scratch& ForThread(int n)
 	{
 		thread_local Scratch s;
 		if (int(s.level.size()) < n)
 		{
-			for (auto* v : {&s.level, &s.gathered})
-				v->resize(size_t(n));
+			s.level.resize(size_t(n), std::numeric_limits<double>::infinity());
+			s.gathered.resize(size_t(n));
+			s.minima.resize(size_t(n));
 			s.x.resize(size_t(n));
 			s.index.resize(size_t(n));
 			s.wrapped.resize(size_t(n));
@@ -138,7 +140,6 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	Scratch& scratch = Scratch::ForThread(n);
 	double* level = scratch.level.data();
 	const int m = ReachableSamples(outer, rel, runs, fast, scratch.index.data());
-	std::fill(level, level + n, std::numeric_limits<double>::infinity());
 	for (int j = 0; j < m; ++j)
 		scratch.x[j] = ToWorld(rel, samples.point[size_t(scratch.index[j])]);
 	outer.Levels(scratch.x.data(), m, scratch.gathered.data());
@@ -152,6 +153,21 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	for (int i = 0; i < n && start < 0; ++i)
 		if (!inside(i))
 			start = i;
+	// The levels set are reset to +∞ once the minima are found, or on any way out (a shape
+	// function that throws included).
+	struct Reset
+	{
+		double* level;
+		const int* index;
+		int count;
+		void operator()()
+		{
+			for (int j = 0; j < count; ++j)
+				level[index[j]] = std::numeric_limits<double>::infinity();
+			count = 0;
+		}
+		~Reset() { (*this)(); }
+	} reset{level, scratch.index.data(), m};
 	if (start < 0)
 		return 0;
 	// Every local minimum of the level along a run is a part: a long run (a lobe lying along the
@@ -159,7 +175,7 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	// run's deepest sample alone, the part at the contact's end was its own, and the manifold
 	// had two points one step and one the next. They are taken in order from the sample after
 	// `start`, cyclically (the order decides which of more than `max` stay).
-	int* minima = scratch.index.data(); // (reused: the minima in that order)
+	int* minima = scratch.minima.data();
 	int candidates = 0;
 	{
 		int first = 0;
@@ -180,6 +196,7 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 		for (int j = 0; j < wrappedCount; ++j)
 			minima[candidates++] = wrapped[j];
 	}
+	reset(); // (the levels are not needed below)
 	const bool mayskip = fast && skip && candidates <= max;
 	const Vec2 skipPoint = mayskip ? ToBody(pi, skip->point) : Vec2();
 	int found = 0;
