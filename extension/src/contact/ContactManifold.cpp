@@ -17,6 +17,7 @@
 
 #include "b2analytic/SuperellipseShape.h"
 #include "b2analytic/SurfaceQueries.h"
+#include "contact/OverlapParts.h"
 #include "contact/SolverCore.h"
 #include "numerics/RootFinding.h"
 
@@ -386,96 +387,6 @@ int LobesOnFace(const Face& fa, const ManifoldSide& b, double tol, double radii,
 	return found;
 }
 
-// One connected part of the overlap of two particles: the deepest point of one particle's
-// surface inside the other, the other's outward normal there turned to point from A to B, and
-// the separation along it (negative).
-struct OverlapPart
-{
-	Vec2 pointA, pointB, normal;
-	double separation = 0.0;
-};
-
-// The parts of the overlap that the surface of `inner` shows inside `outer` (world): each local
-// minimum of outer's level along a run of inner's cached surface samples inside outer is one
-// part, refined between its neighbours (Brent's method on the polar angle, to 1e-10 rad). The
-// normal is outer's gradient there (the level's minimum along inner's curve is where the two
-// normals agree) and the depth the distance along it to outer's surface (Newton on the level
-// along the line, from the first-order depth, at most eight steps). `outerIsA` says which side
-// outer is, for the normal's sense (from A to B) and the points. At most `max` parts, the
-// deepest kept; none where inner lies wholly inside outer.
-int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const Pose& pi, bool outerIsA, OverlapPart* out, int max)
-{
-	const SurfaceSamples& samples = inner.SamplesRef();
-	const int n = samples.Count();
-	const Pose rel = Relative(po, pi); // inner's body to outer's body
-	std::vector<Vec2> x(static_cast<size_t>(n));
-	std::vector<double> level(static_cast<size_t>(n), 0.0);
-	for (int i = 0; i < n; ++i)
-		x[size_t(i)] = ToWorld(rel, samples.point[size_t(i)]);
-	outer.Levels(x.data(), n, level.data());
-	const double surface = outer.SurfaceLevel();
-	auto inside = [&](int i) { return level[size_t(i)] < surface; };
-	int start = -1;
-	for (int i = 0; i < n && start < 0; ++i)
-		if (!inside(i))
-			start = i;
-	if (start < 0)
-		return 0;
-	// Every local minimum of the level along a run is a part: a long run (a lobe lying along the
-	// other's side) has one at either end, and the contact, warm-started, at either; with the
-	// run's deepest sample alone, the part at the contact's end was its own, and the manifold
-	// had two points one step and one the next.
-	int found = 0;
-	for (int k = 1; k <= n; ++k)
-	{
-		const int deepest = (start + k) % n;
-		const double here = level[size_t(deepest)];
-		if (!inside(deepest) || !(here <= level[size_t((deepest + n - 1) % n)] && here < level[size_t((deepest + 1) % n)]))
-			continue;
-		double lo, hi;
-		samples.NeighbourAngles(deepest, lo, hi);
-		auto levelAt = [&](double theta) { return outer.Level(ToWorld(rel, inner.SurfacePoint(theta))); };
-		const ScalarResult m = MinimizeBrent(levelAt, lo, hi, 1e-10, 1e-12, 60);
-		const Vec2 q = ToWorld(rel, inner.SurfacePoint(m.x)); // outer's body frame
-		const Vec2 g = outer.Gradient(q);
-		if (!(m.fx < surface) || !(LengthSquared(g) > 0.0) || !std::isfinite(LengthSquared(g)))
-			continue;
-		const Vec2 u = Normalize(g);
-		double s = (surface - m.fx) / Length(g);
-		for (int it = 0; it < 8; ++it)
-		{
-			const LevelDerivatives d = outer.Derivatives(q + s * u);
-			const double slope = Dot(d.gradient, u);
-			if (!(slope > 0.0))
-				break;
-			const double step = (surface - d.value) / slope;
-			s += step;
-			if (std::fabs(step) <= 1e-12 * outer.BoundingRadius())
-				break;
-		}
-		if (!(s > 0.0) || !std::isfinite(s))
-			continue;
-		OverlapPart part;
-		const Vec2 qw = ToWorld(po, q), sw = ToWorld(po, q + s * u), uw = Rotate(po.q, u);
-		part.normal = outerIsA ? uw : -uw;
-		part.pointA = outerIsA ? sw : qw;
-		part.pointB = outerIsA ? qw : sw;
-		part.separation = -s;
-		if (found < max)
-			out[found++] = part;
-		else
-		{
-			int shallowest = 0;
-			for (int j = 1; j < found; ++j)
-				if (out[j].separation > out[shallowest].separation)
-					shallowest = j;
-			if (part.separation < out[shallowest].separation)
-				out[shallowest] = part;
-		}
-	}
-	return found;
-}
-
 // Two particles of which one is not convex may overlap in two places (a lobe in the other's
 // notch, a particle between a heart's lobes); the contact is the deepest by the scaling factor,
 // and which one that is changes with every small motion. A one-point manifold then jumps between
@@ -516,9 +427,12 @@ ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, c
 	// width apart: taken from either side as it came deeper, the second point hopped between
 	// them (0.2 m, the normal turning 0.5 rad a step, in a settled pile of hearts). B's surface
 	// inside A names the parts; A's inside B only where that shows no second part.
-	int count = others(OverlapParts(*a.shape, a.pose, *b.shape, b.pose, true, parts + 1, kMax));
+	// (The contact's own part, which others() drops, is not refined where it surely lies within
+	// `apart` of the contact's point: OverlapSkip.)
+	const OverlapSkip ownB{c.pointB, apart}, ownA{c.pointA, apart};
+	int count = others(OverlapParts(*a.shape, a.pose, *b.shape, b.pose, true, parts + 1, kMax, &ownB));
 	if (count == 1)
-		count = others(OverlapParts(*b.shape, b.pose, *a.shape, a.pose, false, parts + 1, kMax));
+		count = others(OverlapParts(*b.shape, b.pose, *a.shape, a.pose, false, parts + 1, kMax, &ownA));
 	if (count == 1)
 		return single;
 	int pick[2] = {0, 1}, deepest = 0;

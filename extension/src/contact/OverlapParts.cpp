@@ -1,0 +1,252 @@
+// b2analytic: the parts of two particles' overlap, for non-convex pairs' manifolds.
+#include "contact/OverlapParts.h"
+
+#include "contact/SampleRuns.h"
+#include "numerics/RootFinding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace b2a
+{
+
+namespace
+{
+// Scratch of one call, kept per thread and grown, never shrunk: neither allocated nor
+// initialised a call (two heap allocations a call cost a tenth as much as the levels they held).
+struct Scratch
+{
+	std::vector<Vec2> x;          // places to evaluate (outer's body frame)
+	std::vector<double> level;    // per sample; +∞ between calls (each call resets what it set)
+	std::vector<double> gathered; // per place
+	std::vector<int> index;       // the sample of each place; then the minima, in order
+	std::vector<int> wrapped;     // minima at or before `start`
+	std::vector<int> minima;      // the minima, in order
+	static Scratch& ForThread(int n)
+	{
+		thread_local Scratch s;
+		if (int(s.level.size()) < n)
+		{
+			s.level.resize(size_t(n), std::numeric_limits<double>::infinity());
+			s.gathered.resize(size_t(n));
+			s.minima.resize(size_t(n));
+			s.x.resize(size_t(n));
+			s.index.resize(size_t(n));
+			s.wrapped.resize(size_t(n));
+		}
+		return s;
+	}
+};
+
+// The samples of every run over which outer's level bounds lie below its surface level, in
+// increasing order, into index (returns their count): only they can be inside outer. Groups of
+// runs first, then each run's disc, then its thin box, as the grid method bounds them. Every
+// sample where the shape has no bounds.
+int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs, bool fast, int* index)
+{
+	const int n = runs.samples->Count();
+	const LevelBounds* bounds = fast ? outer.Bounds() : nullptr;
+	const int groups = int(runs.groupCentre.size()), runCount = int(runs.runCentre.size());
+	constexpr int kMaxDiscs = 64;
+	// (Counts beyond the discs' scratch: every sample, as without bounds.)
+	if (!bounds || groups > kMaxDiscs || runCount > kMaxDiscs)
+	{
+		for (int i = 0; i < n; ++i)
+			index[i] = i;
+		return n;
+	}
+	const double surface = outer.SurfaceLevel();
+	Vec2 centres[kMaxDiscs];
+	double radii[kMaxDiscs], lower[kMaxDiscs];
+	int runOf[kMaxDiscs];
+	for (int g = 0; g < groups; ++g)
+	{
+		centres[g] = ToWorld(rel, runs.groupCentre[size_t(g)]);
+		radii[g] = runs.groupRadius[size_t(g)];
+	}
+	bounds->LevelLowerBounds(centres, radii, groups, lower);
+	int candidates = 0;
+	for (int g = 0; g < groups; ++g)
+	{
+		if (lower[g] >= surface)
+			continue;
+		const int last = std::min((g + 1) * SampleRuns::kGroupRuns, runCount);
+		for (int r = g * SampleRuns::kGroupRuns; r < last; ++r)
+			runOf[candidates++] = r;
+	}
+	for (int j = 0; j < candidates; ++j)
+	{
+		centres[j] = ToWorld(rel, runs.runCentre[size_t(runOf[j])]);
+		radii[j] = runs.runRadius[size_t(runOf[j])];
+	}
+	bounds->LevelLowerBounds(centres, radii, candidates, lower);
+	int m = 0;
+	bool wrapsToZero = false; // the last run's last sample is sample 0
+	for (int j = 0; j < candidates; ++j)
+	{
+		if (lower[j] >= surface)
+			continue;
+		// The run's thin box, where its disc did not rule it out (as the grid method's last
+		// look before it evaluates a run).
+		OrientedBox box = runs.runBox[size_t(runOf[j])];
+		box.centre = ToWorld(rel, box.centre);
+		box.axis = Rotate(rel.q, box.axis);
+		if (bounds->TightLevelLowerBound(box) >= surface)
+			continue;
+		// Runs come in increasing order and share their end samples: each sample once.
+		const int first = runOf[j] * SampleRuns::kRunLength;
+		const int last = std::min(first + SampleRuns::kRunLength, n);
+		for (int k = m > 0 && index[m - 1] >= first ? index[m - 1] + 1 : first; k <= last; ++k)
+		{
+			if (k == n)
+				wrapsToZero = true;
+			else
+				index[m++] = k;
+		}
+	}
+	if (wrapsToZero && !(m > 0 && index[0] == 0))
+	{
+		for (int j = m; j > 0; --j)
+			index[j] = index[j - 1];
+		index[0] = 0;
+		++m;
+	}
+	return m;
+}
+
+// Whether every point of inner's surface between sample k's neighbours (body frame) lies within
+// `within` of p: the samples' distances, plus the arcs' measured deviation from their chords
+// (taken four times over: the grid's discs take it twice) and the rounding of two poses.
+bool SurelyWithin(const SurfaceSamples& s, int k, Vec2 p, double within, double size)
+{
+	const int n = s.Count();
+	const int before = (k + n - 1) % n, after = (k + 1) % n;
+	const double far = std::max({Distance(s.point[size_t(before)], p), Distance(s.point[size_t(k)], p),
+	                             Distance(s.point[size_t(after)], p)});
+	const double deviation = std::max(s.arcDeviation[size_t(before)], s.arcDeviation[size_t(k)]);
+	return far + 4.0 * deviation + 1e-9 * size <= within;
+}
+} // namespace
+
+int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const Pose& pi, bool outerIsA, OverlapPart* out, int max,
+                 const OverlapSkip* skip, bool fast)
+{
+	const SampleRuns& runs = SampleRunsOf(inner, Shape::kDefaultSampleCount);
+	const SurfaceSamples& samples = *runs.samples;
+	const int n = samples.Count();
+	const Pose rel = Relative(po, pi); // inner's body to outer's body
+	Scratch& scratch = Scratch::ForThread(n);
+	double* level = scratch.level.data();
+	const int m = ReachableSamples(outer, rel, runs, fast, scratch.index.data());
+	for (int j = 0; j < m; ++j)
+		scratch.x[j] = ToWorld(rel, samples.point[size_t(scratch.index[j])]);
+	outer.Levels(scratch.x.data(), m, scratch.gathered.data());
+	for (int j = 0; j < m; ++j)
+		level[scratch.index[j]] = scratch.gathered[j];
+	// (Only an evaluated sample can be inside, and the places were gathered in increasing order
+	// of their samples: the loops below run over them alone.)
+	const double surface = outer.SurfaceLevel();
+	auto inside = [&](int i) { return level[i] < surface; };
+	int start = -1;
+	for (int i = 0; i < n && start < 0; ++i)
+		if (!inside(i))
+			start = i;
+	// The levels set are reset to +∞ once the minima are found, or on any way out (a shape
+	// function that throws included).
+	struct Reset
+	{
+		double* level;
+		const int* index;
+		int count;
+		void operator()()
+		{
+			for (int j = 0; j < count; ++j)
+				level[index[j]] = std::numeric_limits<double>::infinity();
+			count = 0;
+		}
+		~Reset() { (*this)(); }
+	} reset{level, scratch.index.data(), m};
+	if (start < 0)
+		return 0;
+	// Every local minimum of the level along a run is a part: a long run (a lobe lying along the
+	// other's side) has one at either end, and the contact, warm-started, at either; with the
+	// run's deepest sample alone, the part at the contact's end was its own, and the manifold
+	// had two points one step and one the next. They are taken in order from the sample after
+	// `start`, cyclically (the order decides which of more than `max` stay).
+	int* minima = scratch.minima.data();
+	int candidates = 0;
+	{
+		int first = 0;
+		while (first < m && scratch.index[first] <= start)
+			++first;
+		auto isMinimum = [&](int k) {
+			const double here = level[k];
+			return inside(k) && here <= level[(k + n - 1) % n] && here < level[(k + 1) % n];
+		};
+		int* wrapped = scratch.wrapped.data();
+		int wrappedCount = 0;
+		for (int j = 0; j < first; ++j)
+			if (isMinimum(scratch.index[j]))
+				wrapped[wrappedCount++] = scratch.index[j];
+		for (int j = first; j < m; ++j)
+			if (isMinimum(scratch.index[j]))
+				minima[candidates++] = scratch.index[j];
+		for (int j = 0; j < wrappedCount; ++j)
+			minima[candidates++] = wrapped[j];
+	}
+	reset(); // (the levels are not needed below)
+	const bool mayskip = fast && skip && candidates <= max;
+	const Vec2 skipPoint = mayskip ? ToBody(pi, skip->point) : Vec2();
+	int found = 0;
+	for (int j = 0; j < candidates; ++j)
+	{
+		const int deepest = minima[j];
+		if (mayskip && SurelyWithin(samples, deepest, skipPoint, skip->within, inner.BoundingRadius()))
+			continue; // the caller's own part, discarded there, and taking no other's place
+		double lo, hi;
+		samples.NeighbourAngles(deepest, lo, hi);
+		auto levelAt = [&](double theta) { return outer.Level(ToWorld(rel, inner.SurfacePoint(theta))); };
+		const ScalarResult mb = MinimizeBrent(levelAt, lo, hi, 1e-10, 1e-12, 60);
+		const Vec2 q = ToWorld(rel, inner.SurfacePoint(mb.x)); // outer's body frame
+		const Vec2 g = outer.Gradient(q);
+		if (!(mb.fx < surface) || !(LengthSquared(g) > 0.0) || !std::isfinite(LengthSquared(g)))
+			continue;
+		const Vec2 u = Normalize(g);
+		double s = (surface - mb.fx) / Length(g);
+		for (int it = 0; it < 8; ++it)
+		{
+			const LevelDerivatives d = outer.Derivatives(q + s * u);
+			const double slope = Dot(d.gradient, u);
+			if (!(slope > 0.0))
+				break;
+			const double step = (surface - d.value) / slope;
+			s += step;
+			if (std::fabs(step) <= 1e-12 * outer.BoundingRadius())
+				break;
+		}
+		if (!(s > 0.0) || !std::isfinite(s))
+			continue;
+		OverlapPart part;
+		const Vec2 qw = ToWorld(po, q), sw = ToWorld(po, q + s * u), uw = Rotate(po.q, u);
+		part.normal = outerIsA ? uw : -uw;
+		part.pointA = outerIsA ? sw : qw;
+		part.pointB = outerIsA ? qw : sw;
+		part.separation = -s;
+		if (found < max)
+			out[found++] = part;
+		else
+		{
+			int shallowest = 0;
+			for (int j = 1; j < found; ++j)
+				if (out[j].separation > out[shallowest].separation)
+					shallowest = j;
+			if (part.separation < out[shallowest].separation)
+				out[shallowest] = part;
+		}
+	}
+	return found;
+}
+
+} // namespace b2a
