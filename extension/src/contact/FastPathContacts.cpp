@@ -107,7 +107,7 @@ ContactResult SuperellipsePairContact(const Shape& a, const Pose& pa, const Shap
 	const SuperellipseShape* sb = sa ? AsSmoothSuperellipse(b) : nullptr;
 	if (!sb || CentresCoincide(a, pa, b, pb))
 		return c;
-	// Integer exponents: the last Newton steps and the points on the raw levels
+	// Exponents ≥ 2, integer or real: the last Newton steps and the points on the raw levels
 	// (FinishSuperellipseContact), from a warm start or from where the cold solve's steps are
 	// small; where it declines, the full solve from the start.
 	SuperellipseHandOver handOver;
@@ -129,7 +129,7 @@ ContactResult SuperellipsePairContact(const Shape& a, const Pose& pa, const Shap
 			// twentieth, a gauge evaluation earlier; with n ≠ m it would decline more pairs from
 			// a tenth, which then cost a full solve, so it keeps the twentieth.
 			const SuperellipseTerms &ta = sa->Terms(), &tb = sb->Terms();
-			if (ta.nInt == ta.mInt && tb.nInt == tb.mInt)
+			if (ta.n == ta.m && tb.n == tb.m)
 				handOver.below = 0.1;
 		}
 	}
