@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <typeinfo>
 #include <utility>
 #include <vector>
 
@@ -401,6 +402,27 @@ struct OverlapPart
 	double separation = 0.0;
 };
 
+// The levels of `outer` at the body points x, as Shape::Levels gives them, but where outer is a
+// superellipse, +∞ for a point outside its bounding box (|x/a| > 1 or |y/b| > 1, so that
+// f = |x/a|^n + |y/b|^m > 1, the surface level, in either form of the level): OverlapParts reads
+// a level only to tell whether its point is inside (it is not, either way) and whether an inside
+// point's level lies below its neighbours' (it lies below 1, so below both values): the same
+// parts, without the powers of the samples far from the contact, most of a particle's samples
+// against a neighbour's box.
+void OuterLevels(const Shape& outer, const Vec2* x, int n, double* level)
+{
+	if (typeid(outer) != typeid(SuperellipseShape) || outer.SurfaceLevel() != 1.0)
+	{
+		outer.Levels(x, n, level);
+		return;
+	}
+	const SuperellipseShape& s = static_cast<const SuperellipseShape&>(outer);
+	const double invA = s.Terms().invA, invB = s.Terms().invB;
+	for (int i = 0; i < n; ++i)
+		level[i] = std::fabs(x[i].x * invA) > 1.0 || std::fabs(x[i].y * invB) > 1.0 ? std::numeric_limits<double>::infinity()
+		                                                                            : s.Level(x[i]);
+}
+
 // The parts of the overlap that the surface of `inner` shows inside `outer` (world): each local
 // minimum of outer's level along a run of inner's cached surface samples inside outer is one
 // part, refined between its neighbours (Brent's method on the polar angle, to 1e-10 rad). The
@@ -418,7 +440,7 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	std::vector<double> level(static_cast<size_t>(n), 0.0);
 	for (int i = 0; i < n; ++i)
 		x[size_t(i)] = ToWorld(rel, samples.point[size_t(i)]);
-	outer.Levels(x.data(), n, level.data());
+	OuterLevels(outer, x.data(), n, level.data());
 	const double surface = outer.SurfaceLevel();
 	auto inside = [&](int i) { return level[size_t(i)] < surface; };
 	int start = -1;
