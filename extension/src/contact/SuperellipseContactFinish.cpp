@@ -81,7 +81,8 @@ bool RawConditionsHold(const PairDerivatives& e, Vec2 x, const Pose& rel, const 
 // that does not contract by 4 as Newton does in its quadratic regime, a singular Jacobian or 4
 // steps without settling return false. On success x, μ and e are the answer, and `iterations`
 // the steps taken.
-// `linearLast`: whether the last step may be taken unevaluated. Its values f + ∇f·δ and
+// `linearLast` (read for Real only: integer exponents always may): whether the last step may be
+// taken unevaluated. Its values f + ∇f·δ and
 // ∇f + ∇²f·δ are exact to O(|δ|²) where ∇²f is Lipschitz: every exponent an integer ≥ 2 or a
 // real ≥ 3 (|X|^{n−2} with n − 2 ≥ 1). For a real n in (2, 3), ∇²f ∝ |X|^{n−2} is only Hölder
 // continuous at the axis X = 0, of order n − 2 < 1, and the gradient's model errs by up to
@@ -130,7 +131,7 @@ bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb,
 		// the point is near the solution (NearSolution: the contraction alone can mislead).
 		const bool settled = previous > 0.0 && previous <= 1e-2 * size && NewtonSettled(stepX, previous, tolerance) &&
 		                     NewtonSettled(stepMu, previousMu, options.stepTolerance * mu) && NearSolution(e.fA, e.fB, e.gA, e.gB);
-		if (settled && linearLast)
+		if (settled && (!Real || linearLast))
 		{
 			// The last step, taken without evaluating the shapes: f + ∇f·δ and ∇f + ∇²f·δ, exact to
 			// O(|δ|²), far below the tolerance here.
@@ -149,7 +150,7 @@ bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb,
 		// A step below the tolerance ends the steps only at a solution (ConditionsHold on the raw
 		// levels: their mismatch and the normals' alignment, to what the rounding of x allows); so
 		// may a settled step taken evaluated (not linearLast).
-		if ((settled || stepX <= tolerance) && RawConditionsHold(e, x, rel, pa, pb))
+		if (((Real && settled) || stepX <= tolerance) && RawConditionsHold(e, x, rel, pa, pb))
 			return mu > 0.0;
 		previous = stepX;
 		previousMu = stepMu;
@@ -225,12 +226,13 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 	// per shape: no roots, no divisions. So plain Newton steps (NewtonOnRawLevels), and where
 	// they decline the caller's full solver decides (nothing is written before success).
 	const SuperellipseTerms &ta = a.Terms(), &tb = b.Terms();
-	if (!SmoothExponents(ta) || !SmoothExponents(tb) || !IsFinite(x))
-		return false;
 	// Real exponents: one pow per axis and evaluation (two per shape), against the full solver's
 	// the same pows, a root and a division for each gauge, and the line searches' evaluations.
+	// (Integer pairs, the common case, pass the first test alone.)
 	const bool real = !IntegerExponents(ta) || !IntegerExponents(tb);
-	const bool linearLast = !real || (LipschitzHessian(ta) && LipschitzHessian(tb));
+	if ((real && !(SmoothExponents(ta) && SmoothExponents(tb))) || !IsFinite(x))
+		return false;
+	const bool linearLast = real && LipschitzHessian(ta) && LipschitzHessian(tb);
 	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
 	const Pose rel = Relative(pa, pb);
 	PairDerivatives e;
@@ -251,7 +253,7 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 		return false;
 	int iterations = 0;
 	if (!(real ? NewtonOnRawLevels<true>(ta, tb, pa, pb, rel, options, size, linearLast, x, mu, e, iterations)
-	           : NewtonOnRawLevels<false>(ta, tb, pa, pb, rel, options, size, true, x, mu, e, iterations)))
+	           : NewtonOnRawLevels<false>(ta, tb, pa, pb, rel, options, size, false, x, mu, e, iterations)))
 		return false;
 	// The gradients opposed (the full solver's test: unit normals within 1e-6 of −1 in their dot
 	// product), without the roots: ∇fA·∇fB < 0 and (∇fA·∇fB)² > (1 − 1e-6)²|∇fA|²|∇fB|².
