@@ -169,11 +169,17 @@ bool FindFace(const Shape& shape, Vec2 x, double tol, double face[3])
 	return true;
 }
 
+// An angle reduced to [−π, π]: std::remainder(d, 2π), without the library call where |d| ≤ π.
+// There it is d itself, exactly: the remainder is d − k·2π with k the integer nearest d/2π, 0
+// for |d| < π, and 0 too at the tie |d| = π (ties go to the even k). A kept face's three
+// differences and an off-face contact's one lie within π nearly always.
+inline double TurnRemainder(double d) { return std::fabs(d) <= kPi ? d : std::remainder(d, 2.0 * kPi); }
+
 // Whether the body point x lies on the face (angles as FindFace gives them).
 bool OnFace(const double face[3], Vec2 x)
 {
-	const double at = std::remainder(std::atan2(x.y, x.x) - face[0], 2.0 * kPi);
-	return at >= std::remainder(face[1] - face[0], 2.0 * kPi) && at <= std::remainder(face[2] - face[0], 2.0 * kPi);
+	const double at = TurnRemainder(std::atan2(x.y, x.x) - face[0]);
+	return at >= TurnRemainder(face[1] - face[0]) && at <= TurnRemainder(face[2] - face[0]);
 }
 
 // The face of an analytic convex side at its contact point p (world) with outward direction d
@@ -210,7 +216,7 @@ Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, doub
 		// above sees). In a settling pile most contacts on a blocky particle's rounded corners
 		// were searched again at every step.
 		const double theta = std::atan2(x.y, x.x);
-		if (std::fabs(std::remainder(theta - offFace, 2.0 * kPi)) < 0.01)
+		if (std::fabs(TurnRemainder(theta - offFace)) < 0.01)
 			return out;
 		if (!MayReachFace(shape, x, tol) || !FindFace(shape, x, tol, face))
 			cached = false;

@@ -283,10 +283,10 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
                                        const SolverOptions& options, const WarmStart* warm,
                                        SuperellipsePairPoint* at = nullptr, SuperellipseHandOver* handOver = nullptr);
 
-/// Whether FinishSuperellipseContact takes the pair: integer exponents ≥ 2 throughout.
+/// Whether FinishSuperellipseContact takes the pair: exponents ≥ 2 throughout, integer or real.
 bool FinishApplies(const SuperellipseShape& a, const SuperellipseShape& b);
 
-/// The contact of two smooth superellipses with integer exponents ≥ 2 (FinishApplies) from a
+/// The contact of two smooth superellipses with exponents ≥ 2 (FinishApplies) from a
 /// point `x` (A's body frame, world lengths) and multiplier `mu` within Newton's quadratic regime
 /// of the answer (a warm start's WarmStartPoint, or a cold solve's SuperellipseHandOver),
 /// SuperellipseContactFinish.cpp: Newton on the raw levels f, the points by Halley steps, and

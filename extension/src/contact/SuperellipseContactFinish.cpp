@@ -1,5 +1,5 @@
-// b2analytic: the last Newton steps of two superellipses with integer exponents, on the raw
-// levels f (no gauge roots), and their contact points by Halley steps.
+// b2analytic: the last Newton steps of two smooth superellipses (exponents ≥ 2, integer or
+// real), on the raw levels f (no gauge roots), and their contact points by Halley steps.
 #include "b2analytic/Contact.h"
 #include "contact/ResultChecks.h"
 #include "contact/SolverCore.h"
@@ -21,6 +21,10 @@ namespace
 // Both shapes at x (A's body frame, world lengths): f, ∇f and ∇²f of each in A's frame, and x in
 // B's body frame. B's derivatives are turned by r (B's axes in A's frame): ∇f ↦ R∇f and
 // diag(hx, hy) ↦ R diag(hx, hy) Rᵀ.
+// `Real`: some exponent is not an integer, and each axis takes its power |X|^{n−2} from one
+// std::pow (SmoothSuperellipseDerivatives, the level and its derivatives all from that value);
+// pairs of integer exponents keep the multiplications alone (IntegerSuperellipseDerivatives,
+// the same values without PowAbs's choice between pow and products).
 struct PairDerivatives
 {
 	double fA, fB;
@@ -29,14 +33,27 @@ struct PairDerivatives
 	Vec2 xB;
 };
 
+// Whether ∇²f is Lipschitz continuous: each exponent an integer ≥ 2 or a real ≥ 3.
+inline bool LipschitzHessian(const SuperellipseTerms& t)
+{
+	return (t.nInt >= 2 || t.n >= 3.0) && (t.mInt >= 2 || t.m >= 3.0);
+}
+
+template <bool Real>
+inline AxisDerivatives AxisDerivativesOf(const SuperellipseTerms& t, Vec2 x)
+{
+	return Real ? SmoothSuperellipseDerivatives(t, x.x, x.y) : IntegerSuperellipseDerivatives(t, x.x, x.y);
+}
+
+template <bool Real>
 inline void EvaluatePair(const SuperellipseTerms& ta, const SuperellipseTerms& tb, const Pose& rel, Vec2 x, PairDerivatives& e)
 {
-	const AxisDerivatives da = IntegerSuperellipseDerivatives(ta, x.x, x.y);
+	const AxisDerivatives da = AxisDerivativesOf<Real>(ta, x);
 	e.fA = da.f;
 	e.gA = Vec2(da.gx, da.gy);
 	e.hA = Sym22{da.hx, 0.0, da.hy};
 	e.xB = InvRotate(rel.q, x - rel.p);
-	const AxisDerivatives db = IntegerSuperellipseDerivatives(tb, e.xB.x, e.xB.y);
+	const AxisDerivatives db = AxisDerivativesOf<Real>(tb, e.xB);
 	const double c = rel.q.c, s = rel.q.s;
 	e.fB = db.f;
 	e.gB = Rotate(rel.q, Vec2(db.gx, db.gy));
@@ -64,8 +81,19 @@ bool RawConditionsHold(const PairDerivatives& e, Vec2 x, const Pose& rel, const 
 // that does not contract by 4 as Newton does in its quadratic regime, a singular Jacobian or 4
 // steps without settling return false. On success x, μ and e are the answer, and `iterations`
 // the steps taken.
+// `linearLast` (read for Real only: integer exponents always may): whether the last step may be
+// taken unevaluated. Its values f + ∇f·δ and
+// ∇f + ∇²f·δ are exact to O(|δ|²) where ∇²f is Lipschitz: every exponent an integer ≥ 2 or a
+// real ≥ 3 (|X|^{n−2} with n − 2 ≥ 1). For a real n in (2, 3), ∇²f ∝ |X|^{n−2} is only Hölder
+// continuous at the axis X = 0, of order n − 2 < 1, and the gradient's model errs by up to
+// (n/a)|δx/a|^{n−1}: against |∇f| ≈ m/b on the face that crosses the axis, a normal turned by
+// |δx/a|^{n−1}, 1e-9 rad for a last step of 1e-6 of the size and n = 2.5 (NewtonSettled allows
+// steps that large). There the settled step is evaluated, and the exit's RawConditionsHold
+// sees the true values.
+template <bool Real>
 bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb, const Pose& pa, const Pose& pb, const Pose& rel,
-                       const SolverOptions& options, double size, Vec2& x, double& mu, PairDerivatives& e, int& iterations)
+                       const SolverOptions& options, double size, bool linearLast, Vec2& x, double& mu, PairDerivatives& e,
+                       int& iterations)
 {
 	const double tolerance = options.stepTolerance * size; // on the point, in world lengths
 	double previous = 0.0, previousMu = 0.0;                // the last step in x and in μ (0: none yet)
@@ -101,8 +129,9 @@ bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb,
 			return false; // not contracting: not in Newton's quadratic regime
 		// The last step may be taken unevaluated where the steps show the quadratic regime and
 		// the point is near the solution (NearSolution: the contraction alone can mislead).
-		if (previous > 0.0 && previous <= 1e-2 * size && NewtonSettled(stepX, previous, tolerance) &&
-		    NewtonSettled(stepMu, previousMu, options.stepTolerance * mu) && NearSolution(e.fA, e.fB, e.gA, e.gB))
+		const bool settled = previous > 0.0 && previous <= 1e-2 * size && NewtonSettled(stepX, previous, tolerance) &&
+		                     NewtonSettled(stepMu, previousMu, options.stepTolerance * mu) && NearSolution(e.fA, e.fB, e.gA, e.gB);
+		if (settled && (!Real || linearLast))
 		{
 			// The last step, taken without evaluating the shapes: f + ∇f·δ and ∇f + ∇²f·δ, exact to
 			// O(|δ|²), far below the tolerance here.
@@ -117,10 +146,11 @@ bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb,
 		}
 		x = x + dx;
 		mu += dmu;
-		EvaluatePair(ta, tb, rel, x, e);
+		EvaluatePair<Real>(ta, tb, rel, x, e);
 		// A step below the tolerance ends the steps only at a solution (ConditionsHold on the raw
-		// levels: their mismatch and the normals' alignment, to what the rounding of x allows).
-		if (stepX <= tolerance && RawConditionsHold(e, x, rel, pa, pb))
+		// levels: their mismatch and the normals' alignment, to what the rounding of x allows); so
+		// may a settled step taken evaluated (not linearLast).
+		if (((Real && settled) || stepX <= tolerance) && RawConditionsHold(e, x, rel, pa, pb))
 			return mu > 0.0;
 		previous = stepX;
 		previousMu = stepMu;
@@ -139,15 +169,15 @@ void ContactAt(const SuperellipseShape& a, const Pose& pa, const SuperellipseSha
 	const double knownA[3] = {e.fA, Dot(e.gA, n), Dot(n, e.hA * n)};
 	const double knownB[3] = {e.fB, -Dot(e.gB, n), Dot(n, e.hB * n)};
 	// (A point within 1e-10 of its surface is its own crossing: it starts found, at t = 0.)
-	IntegerCrossing crossA(ta, x, n, knownA, std::min(a.A(), a.B())), crossB(tb, e.xB, nB, knownB, std::min(b.A(), b.B()));
+	SmoothCrossing crossA(ta, x, n, knownA, std::min(a.A(), a.B())), crossB(tb, e.xB, nB, knownB, std::min(b.A(), b.B()));
 	if (std::fabs(e.fA - 1.0) <= 1e-10)
-		crossA.state = IntegerCrossing::State::found;
+		crossA.state = SmoothCrossing::State::found;
 	if (std::fabs(e.fB - 1.0) <= 1e-10)
-		crossB.state = IntegerCrossing::State::found;
-	IntegerFarCrossings(crossA, crossB);
+		crossB.state = SmoothCrossing::State::found;
+	SmoothFarCrossings(crossA, crossB);
 	double tA = crossA.t, tB = crossB.t;
-	const bool onA = crossA.state == IntegerCrossing::State::found || SuperellipseFarCrossing(ta, x, n, tA);
-	const bool onB = onA && (crossB.state == IntegerCrossing::State::found || SuperellipseFarCrossing(tb, e.xB, nB, tB));
+	const bool onA = crossA.state == SmoothCrossing::State::found || SuperellipseFarCrossing(ta, x, n, tA);
+	const bool onB = onA && (crossB.state == SmoothCrossing::State::found || SuperellipseFarCrossing(tb, e.xB, nB, tB));
 	// The world normal is normalised after the turn, as ContactFromLevel's is: a pose built from
 	// Box2D's float rotation is off unit length by up to 1e-7, and so would be Rotate(pa.q, n).
 	const Vec2 normal = Normalize(Rotate(pa.q, n));
@@ -180,7 +210,7 @@ void ContactAt(const SuperellipseShape& a, const Pose& pa, const SuperellipseSha
 
 bool FinishApplies(const SuperellipseShape& a, const SuperellipseShape& b)
 {
-	return IntegerExponents(a.Terms()) && IntegerExponents(b.Terms());
+	return SmoothExponents(a.Terms()) && SmoothExponents(b.Terms());
 }
 
 bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
@@ -196,12 +226,20 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 	// per shape: no roots, no divisions. So plain Newton steps (NewtonOnRawLevels), and where
 	// they decline the caller's full solver decides (nothing is written before success).
 	const SuperellipseTerms &ta = a.Terms(), &tb = b.Terms();
-	if (!IntegerExponents(ta) || !IntegerExponents(tb) || !IsFinite(x))
+	// Real exponents: one pow per axis and evaluation (two per shape), against the full solver's
+	// the same pows, a root and a division for each gauge, and the line searches' evaluations.
+	// (Integer pairs, the common case, pass the first test alone.)
+	const bool real = !IntegerExponents(ta) || !IntegerExponents(tb);
+	if ((real && !(SmoothExponents(ta) && SmoothExponents(tb))) || !IsFinite(x))
 		return false;
+	const bool linearLast = real && LipschitzHessian(ta) && LipschitzHessian(tb);
 	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
 	const Pose rel = Relative(pa, pb);
 	PairDerivatives e;
-	EvaluatePair(ta, tb, rel, x, e);
+	if (real)
+		EvaluatePair<true>(ta, tb, rel, x, e);
+	else
+		EvaluatePair<false>(ta, tb, rel, x, e);
 	// The multiplier given (the warm start's, off by the motion since, or the gauge solve's, off
 	// by its last step) starts Newton, which moves μ with the point. Only where it is unusable
 	// the least-squares one at the start, −∇fA·∇fB/|∇fB|² (taken always, it was no better a
@@ -214,7 +252,8 @@ bool FinishSuperellipseContact(const SuperellipseShape& a, const Pose& pa, const
 	if (!(mu > 0.0) || !std::isfinite(mu))
 		return false;
 	int iterations = 0;
-	if (!NewtonOnRawLevels(ta, tb, pa, pb, rel, options, size, x, mu, e, iterations))
+	if (!(real ? NewtonOnRawLevels<true>(ta, tb, pa, pb, rel, options, size, linearLast, x, mu, e, iterations)
+	           : NewtonOnRawLevels<false>(ta, tb, pa, pb, rel, options, size, false, x, mu, e, iterations)))
 		return false;
 	// The gradients opposed (the full solver's test: unit normals within 1e-6 of −1 in their dot
 	// product), without the roots: ∇fA·∇fB < 0 and (∇fA·∇fB)² > (1 − 1e-6)²|∇fA|²|∇fB|².

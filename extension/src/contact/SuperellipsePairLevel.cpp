@@ -67,14 +67,13 @@ inline void ToGauge(const PairInA& p, double f, double fx, double fy, double hxx
 }
 
 // f, ∇f and ∇²f's diagonal in the shape's axes: IntegerSuperellipseDerivatives where both
-// shapes' exponents are integers ≥ 2 (the same values, inline and without the general form's
-// cases), else RawSuperellipseDerivatives.
+// shapes' exponents are integers ≥ 2, else SmoothSuperellipseDerivatives (every exponent ≥ 2
+// here: RawSuperellipseDerivatives' values without its cases for exponents below 2).
 inline AxisDerivatives AxisDerivativesAt(const SuperellipseTerms& t, Vec2 x, bool integer)
 {
 	if (integer)
 		return IntegerSuperellipseDerivatives(t, x.x, x.y);
-	const LevelDerivatives d = RawSuperellipseDerivatives(t, x);
-	return {d.value, d.gradient.x, d.gradient.y, d.hessian.xx, d.hessian.yy};
+	return SmoothSuperellipseDerivatives(t, x.x, x.y);
 }
 
 // Both shapes at ξ (A's frame, units of s). A's derivatives are already in its frame; B's are

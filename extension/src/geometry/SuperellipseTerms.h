@@ -93,6 +93,34 @@ inline AxisDerivatives IntegerSuperellipseDerivatives(const SuperellipseTerms& t
 	        t.hessY * ym2};
 }
 
+/// Whether both exponents are at least 2 (SmoothSuperellipseDerivatives applies): f is then
+/// twice continuously differentiable, its Hessian finite everywhere.
+inline bool SmoothExponents(const SuperellipseTerms& t) { return t.n >= 2.0 && t.m >= 2.0; }
+
+/// An exponent's power |X|^{e−2} as PowAbs takes it: the small integer e − 2 where e is an integer
+/// of at least 2 (powers by multiplication), else −1 (std::pow).
+inline int PowerBelowTwo(int eInt) { return eInt >= 2 ? eInt - 2 : -1; }
+
+/// IntegerSuperellipseDerivatives for any exponents ≥ 2 (SmoothExponents), integer or real, from
+/// one power per axis. With X = x/a and P = |X|^{n−2} (std::pow for a real n, one call, the only
+/// transcendental of the evaluation; by multiplication for an integer n):
+///   |X|^{n−1} = P·|X|,   |X|^n = P·|X|²,
+///   ∂f/∂x = (n/a) sgn(X)|X|^{n−1},   ∂²f/∂x² = n(n−1)/a² · P,
+/// so the level, gradient and Hessian all come from the same value P and agree with each other
+/// to rounding (no second pow for |X|^{n−1} whose rounding would differ from P·|X|). For n ≥ 2,
+/// P is finite (P = 0 on the axis for n > 2, 1 for n = 2), so no case is needed for X = 0; and
+/// sgn(X)|X|^{n−1} is copysign, as |X|^{n−1} vanishes there. For integer exponents the values
+/// are IntegerSuperellipseDerivatives', bit for bit (the same operations).
+inline AxisDerivatives SmoothSuperellipseDerivatives(const SuperellipseTerms& t, double x, double y)
+{
+	const double X = x * t.invA, Y = y * t.invB;
+	const double ax = std::fabs(X), ay = std::fabs(Y);
+	const double xn2 = PowAbs(ax, t.n - 2.0, PowerBelowTwo(t.nInt)), ym2 = PowAbs(ay, t.m - 2.0, PowerBelowTwo(t.mInt));
+	const double xn1 = xn2 * ax, ym1 = ym2 * ay;
+	return {xn1 * ax + ym1 * ay, t.gradX * std::copysign(xn1, X), t.gradY * std::copysign(ym1, Y), t.hessX * xn2,
+	        t.hessY * ym2};
+}
+
 /// The terms of the same superellipse measured in units of `length` (semi-axes a/length and
 /// b/length): f is unchanged at corresponding points, its gradient is `length` times and its
 /// Hessian `length²` times the original's. Solvers that work in units of the pair's size use it.
@@ -197,10 +225,14 @@ inline bool SuperellipseFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, 
 	return false;
 }
 
-/// The far crossing of f = 1 by the body line x + t·d for integer exponents (IntegerExponents),
-/// by Halley's method on g(t) = f(x + t·d) − 1 from t = 0, where `known` = {f, f', f''} (the
-/// caller's level solve ends with f, ∇f and ∇²f at x). A warm contact's point lies within a
-/// small fraction of the size of both surfaces, where g is a smooth polynomial in t and Halley's
+/// The far crossing of f = 1 by the body line x + t·d for exponents ≥ 2 (SmoothExponents; the
+/// powers as in SmoothSuperellipseDerivatives: by multiplication for integer exponents, one
+/// std::pow per axis and step for real ones), by Halley's method on g(t) = f(x + t·d) − 1 from
+/// t = 0, where `known` = {f, f', f''} (the caller's level solve ends with f, ∇f and ∇²f at x).
+/// A warm contact's point lies within a small fraction of the size of both surfaces, where g is
+/// smooth in t (a polynomial in |u|, |v| for integer exponents; for a real n in (2, 3),
+/// g''' ∝ |u|^{n−3} grows near u = 0, but that term's share of a step's error is bounded by the
+/// size of |u|^n itself over the step, O(|δ·D|^n), still of higher order than δ²), and Halley's
 /// cubic convergence takes one step from the known values and one from an evaluation: the error
 /// after a step δ is about K·|δ|³ with K ≈ |δ|/|δ_before|³, so a step whose predecessor was small
 /// (5e-2 of `unit`) and that contracted tenfold ends the search when K·|δ|³ is below the
@@ -210,9 +242,9 @@ inline bool SuperellipseFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, 
 /// particle), a step would leave 4 units, or it does not settle in 8 steps: the caller then
 /// takes SuperellipseFarCrossing.
 /// A step at a time (Step), so that the two crossings of a contact run interleaved
-/// (IntegerFarCrossings): each step waits for a division and then for the level it evaluates,
+/// (SmoothFarCrossings): each step waits for a division and then for the level it evaluates,
 /// and one crossing's chain fills the other's wait.
-struct IntegerCrossing
+struct SmoothCrossing
 {
 	enum class State { running, found, failed };
 
@@ -220,10 +252,10 @@ struct IntegerCrossing
 #if defined(__GNUC__)
 	__attribute__((always_inline))
 #endif
-	IntegerCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit)
+	SmoothCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit)
 	    : X(x.x * s.invA), Y(x.y * s.invB), D(d.x * s.invA), E(d.y * s.invB), nD(s.n * D), mE(s.m * E),
 	      nnDD(s.n * (s.n - 1.0) * D * D), mmEE(s.m * (s.m - 1.0) * E * E), g(known[0] - 1.0), g1(known[1]), g2(known[2]),
-	      unit(unit), nk(s.nInt - 2), mk(s.mInt - 2)
+	      unit(unit), en(s.n - 2.0), em(s.m - 2.0), nk(PowerBelowTwo(s.nInt)), mk(PowerBelowTwo(s.mInt))
 	{
 	}
 
@@ -266,7 +298,8 @@ struct IntegerCrossing
 		previous = size;
 		const double u = X + t * D, v = Y + t * E;
 		const double au = std::fabs(u), av = std::fabs(v);
-		const double un2 = PowAbs(au, 0.0, nk), vm2 = PowAbs(av, 0.0, mk);
+		// |u|^{n−2} once (SmoothSuperellipseDerivatives), g, g' and g'' from it.
+		const double un2 = PowAbs(au, en, nk), vm2 = PowAbs(av, em, mk);
 		const double un1 = un2 * au, vm1 = vm2 * av;
 		g = un1 * au + vm1 * av - 1.0;
 		g1 = nD * std::copysign(un1, u) + mE * std::copysign(vm1, v);
@@ -278,25 +311,26 @@ struct IntegerCrossing
 	double t = 0.0;
 	double previous = 0.0; // the last step's length (0: none yet)
 	double unit;
-	int nk, mk; // n − 2 and m − 2
+	double en, em; // n − 2 and m − 2
+	int nk, mk;    // the same as small integers, or −1 for real exponents (PowerBelowTwo)
 	State state = State::running;
 };
 
 /// One crossing run alone: true with t where it is found.
-inline bool IntegerFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit, double& t)
+inline bool SmoothFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit, double& t)
 {
-	IntegerCrossing c(s, x, d, known, unit);
-	for (int it = 0; it < 8 && c.state == IntegerCrossing::State::running; ++it)
+	SmoothCrossing c(s, x, d, known, unit);
+	for (int it = 0; it < 8 && c.state == SmoothCrossing::State::running; ++it)
 		c.Step();
 	t = c.t;
-	return c.state == IntegerCrossing::State::found;
+	return c.state == SmoothCrossing::State::found;
 }
 
 /// Two independent crossings, interleaved a step at a time (up to 8 steps each); each ends found
 /// or failed, with the same steps and the same answer as when run alone.
-inline void IntegerFarCrossings(IntegerCrossing& a, IntegerCrossing& b)
+inline void SmoothFarCrossings(SmoothCrossing& a, SmoothCrossing& b)
 {
-	using State = IntegerCrossing::State;
+	using State = SmoothCrossing::State;
 	for (int it = 0; it < 8; ++it)
 	{
 		const bool runA = a.state == State::running, runB = b.state == State::running;
