@@ -10,6 +10,13 @@ namespace b2a
 /// Newton on the common level from (ξ, ν = log μ) in a frame (Newton3.cpp); `level` is λA there.
 LevelResult3 RunNewton3(const PairFrame3& frame, Vec3 xi, double nu, const SolverOptions& options);
 
+/// Whether ξ solves the common level's conditions to the standard of a converged answer: the
+/// gauges ψA, ψB within 1e-11 of each other and the normals opposed to 1e-10 rad, or each within
+/// ten times what the rounding of the point alone leaves (the point known to ε times the largest
+/// world coordinate, moving each ψ by |∇ψ| and each normal by its Hessian over its gradient times
+/// that), but never beyond 1e-9 of the level (the gauges to 1e-9/q) nor 1e-6 rad.
+bool ConditionsHold3(const PairFrame3& frame, Vec3 xi);
+
 /// The point between the centres where ψA = ψB, and μ balancing the gradients there; false
 /// when the centres coincide.
 bool GeometricStart3(const PairFrame3& frame, Vec3& xi, double& mu);
