@@ -205,12 +205,13 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 			return result;
 		}
 		TakeLeastSquaresMultiplier(p);
-		const bool atFloor = p.relative < RoundingFloor(f, p);
+		// At the rounding floor (computed where a step fails: a comparison on the common path).
+		auto atFloor = [&]() { return p.relative < RoundingFloor(f, p); };
 		bool shifted = false; // a truncated or recovery step: its length says nothing of convergence
 		const Solve4Result step = NewtonStep(p, shifted);
 		if (!(step.rcond > 1e-14))
 		{
-			if (atFloor)
+			if (atFloor())
 				break; // singular only at the answer's rounding level
 			result.failure = "singular or ill-conditioned Jacobian";
 			return result;
@@ -232,11 +233,12 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 			return w12 * (q.r[0] * q.r[0] + q.r[1] * q.r[1] + q.r[2] * q.r[2]) + w3 * q.r[3] * q.r[3];
 		};
 		const double merit0 = merit(p);
-		const int halvings = atFloor ? 3 : 40; // at the rounding floor more cannot help
 		double alpha = 1.0;
-		bool accepted = false;
-		for (int k = 0; k < halvings; ++k, alpha *= 0.5)
+		bool accepted = false, floorReached = false;
+		for (int k = 0; k < 40; ++k, alpha *= 0.5)
 		{
+			if (k == 3 && (floorReached = atFloor()))
+				break; // at the rounding floor more halvings cannot help
 			Evaluate(f, p.xi + alpha * Vec3(delta[0], delta[1], delta[2]), p.nu + alpha * delta[3], *trial);
 			if (trial->finite && merit(*trial) <= (1.0 - 1e-4 * alpha) * merit0)
 			{
@@ -246,7 +248,7 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 		}
 		if (!accepted)
 		{
-			if (atFloor)
+			if (floorReached || atFloor())
 				break; // rounding floor: no step lowers the residual any more
 			if (!RecoveryStep(f, p, w12, w3, trust, merit0, merit, *trial))
 			{
