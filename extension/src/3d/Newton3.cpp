@@ -299,7 +299,7 @@ bool ConditionsHold3(const PairFrame3& f, Vec3 xi)
 	const double angle = Length(A.grad / la + B.grad / lb);
 	const double angleFloor = (RowSumNorm(A.hess) / la + RowSumNorm(B.hess) / lb) * delta + 4.0 * eps;
 	return level <= std::max(1e-11, std::min(10.0 * levelFloor, 1e-9 / f.power)) &&
-	       angle <= std::max(1e-10, std::min(10.0 * angleFloor, 1e-6));
+	       angle <= std::max(1e-8, 10.0 * angleFloor);
 }
 
 bool GeometricStart3(const PairFrame3& f, Vec3& xi, double& mu)
