@@ -292,3 +292,65 @@ TEST_CASE("3D contact: Newton refuses non-smooth shapes; the automatic path take
 	REQUIRE(r.Ok());
 	CHECK(r.method == SolveMethod::grid);
 }
+
+TEST_CASE("3D contact: a thin plate at a low level, polished to rounding (and its neighbours)")
+{
+	// The end face of a plate (c = 0.108, n = 20 along its length) deep inside a box-like
+	// superellipsoid, at a common level of 3.3e-4: A's level set there is 4e-3 thick in a frame of
+	// 7.4, so rounding the point alone leaves Newton a relative residual of 1e-11. Newton, cold and
+	// as the grid's polish, must stop there as converged, not fail (the grid's own point had its
+	// normal 1.4e-6 rad off). Neighbours: poses turned and shifted, sizes scaled, by up to 1e-3.
+	const double a0[3] = {1.0419354144608626, 7.7201976178032723, 0.1078648738536027};
+	const double b0[3] = {6.8438943589666943, 1.3913248958570736, 1.5261569113830924};
+	const Pose3 pa0(Vec3(0.4162119475123617, 0.3689364315898324, 0.8190110776417596),
+	                Normalize(Quat(-0.5670668304096111, -0.12180729285554161, -0.4556653982957729, -0.675253462080985)));
+	const Pose3 pb0(Vec3(2.924766455417188, 0.4346271704153372, -4.114810447300112),
+	                Normalize(Quat(-0.22707019232594505, 0.9724086069562462, 0.052933681733669864, 0.007658603827667436)));
+	Random rng(42);
+	double worstNormal = 0.0, worstLevel = 0.0;
+	int gridAnswers = 0;
+	for (int k = 0; k < 24; ++k)
+	{
+		const double s = k == 0 ? 0.0 : 1e-3;
+		auto scaled = [&](const double* v, int i) { return v[i] * (1.0 + s * rng.Uniform(-1, 1)); };
+		const double aa[3] = {scaled(a0, 0), scaled(a0, 1), scaled(a0, 2)}, bb[3] = {scaled(b0, 0), scaled(b0, 1), scaled(b0, 2)};
+		Pair p{MakeSuperellipsoid(aa[0], aa[1], aa[2], 7, 20, 2), MakeSuperellipsoid(bb[0], bb[1], bb[2], 10, 20, 16.839040700682588),
+		       pa0, pb0};
+		if (k > 0)
+		{
+			p.pa = Pose3(pa0.p + s * Vec3(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)),
+			             Normalize(AxisAngle(RandomUnit(rng), s * rng.Uniform(0, 1)) * pa0.q));
+			p.pb = Pose3(pb0.p + s * Vec3(rng.Uniform(-1, 1), rng.Uniform(-1, 1), rng.Uniform(-1, 1)),
+			             Normalize(AxisAngle(RandomUnit(rng), s * rng.Uniform(0, 1)) * pb0.q));
+		}
+		const r3::Shape A(*p.a), B(*p.b);
+		const r3::Pose ra(p.pa), rb(p.pb);
+		const LevelResult3 n = SolveCommonLevelNewton(*p.a, p.pa, *p.b, p.pb);
+		const LevelResult3 g = SolveCommonLevelGrid(*p.a, p.pa, *p.b, p.pb);
+		const LevelResult3 chain = SolveCommonLevel(*p.a, p.pa, *p.b, p.pb);
+		REQUIRE_MESSAGE(chain.Ok(), "neighbour " << k << ": " << std::string(chain.failure));
+		CHECK_MESSAGE(n.Ok(), "neighbour " << k << ": " << std::string(n.failure));
+		if (k == 0)
+			CHECK(g.Ok());
+		for (const LevelResult3* r : {&n, &g, &chain})
+		{
+			if (!r->Ok())
+				continue; // a failure is honest; an answer must be a solution
+			gridAnswers += r == &g;
+			const r3::V3 X = r3::From(r->point);
+			const r3::V3 ga = ra.Rotate(A.Gradient(ra.ToBody(X))), gb = rb.Rotate(B.Gradient(rb.ToBody(X)));
+			long double residual = 1.0L;
+			const r3::SurfaceMinimum ref = r3::Polish(A, ra, B, rb, X, -r3::Dot(ga, gb) / r3::Dot(gb, gb), &residual);
+			REQUIRE(residual < 1e-12L); // the reference converged (its rounding floor: 1e-14 here)
+			const r3::V3 normal = r3::Unit(ra.Rotate(A.Gradient(ra.ToBody(ref.point))));
+			const double angle = double(r3::Len(r3::From(r->normal) - normal));
+			const double level = RelativeError(r->level, double(ref.level));
+			CHECK_MESSAGE(angle <= 1e-6, "neighbour " << k << " method " << MethodName(r->method));
+			CHECK_MESSAGE(level <= 1e-9, "neighbour " << k << " method " << MethodName(r->method));
+			worstNormal = std::max(worstNormal, angle);
+			worstLevel = std::max(worstLevel, level);
+		}
+	}
+	MESSAGE("worst normal " << worstNormal << " rad, level " << worstLevel << "; grid answers " << gridAnswers << " of 24");
+	CHECK(gridAnswers >= 20); // the grid's polish takes on (nearly) all of them
+}

@@ -333,8 +333,13 @@ LevelResult3 SolveCommonLevelGrid(const Shape3& a, const Pose3& pa, const Shape3
 	last.method = SolveMethod::grid;
 	// The root's bracket closes to rounding in C, but the point moves with C faster than C does
 	// where the surfaces are flat (1e-9 of the size): where both shapes are smooth, a polish by
-	// Newton on the common level's equations from here, inside its quadratic regime.
-	if (a.IsSmoothConvex() && b.IsSmoothConvex() && last.multiplier > 0.0 && options.gridRefine)
+	// Newton on the common level's equations from here, inside its quadratic regime. Where it
+	// does not take, the grid's point is the answer only where it solves the conditions to the
+	// same standard (ConditionsHold3). (With kinks, exponents below 2, the conditions do not hold
+	// at a kink and the grid's minimum is the answer as it stands.)
+	if (!options.gridRefine)
+		return last;
+	if (a.IsSmoothConvex() && b.IsSmoothConvex() && last.multiplier > 0.0)
 	{
 		SolverOptions polish = options;
 		polish.maxIterations = 8;
@@ -346,7 +351,13 @@ LevelResult3 SolveCommonLevelGrid(const Shape3& a, const Pose3& pa, const Shape3
 			last.normal = n.normal;
 			last.multiplier = n.multiplier;
 			last.iterations += n.iterations;
+			return last;
 		}
+	}
+	if (a.IsSmoothConvex() && b.IsSmoothConvex() && !ConditionsHold3(f, f.Xi(last.point)))
+	{
+		last.status = SolveStatus::failed;
+		last.failure = "grid: stopped short of a solution (its levels or normals disagree beyond rounding)";
 	}
 	return last;
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <utility>
 
 namespace b2a
@@ -15,9 +16,10 @@ namespace b2a
 namespace
 {
 // A residual (relative to its terms) below which a stalled or singular Newton iteration is at
-// its rounding floor and has converged. Above it the solve fails (the chain's min-max takes
-// over): flat faces of high exponents touching face to face stall Newton at residuals of 1e-10,
-// where the two levels still differ by that much.
+// its rounding floor and has converged, where the point's own rounding does not set a higher one
+// (RoundingFloor). Above it the solve fails (the chain's min-max takes over): flat faces of high
+// exponents touching face to face stall Newton at residuals of 1e-10, where the two levels still
+// differ by that much.
 constexpr double kRoundingFloor = 1e-12;
 
 struct NewtonPoint3
@@ -30,6 +32,32 @@ struct NewtonPoint3
 	double relative = 0.0; // residual relative to the size of its terms
 	bool finite = false;
 };
+
+// The largest absolute row sum of a symmetric matrix (a bound on its eigenvalues).
+double RowSumNorm(const Sym33& h)
+{
+	return std::max({std::fabs(h.xx) + std::fabs(h.xy) + std::fabs(h.xz), std::fabs(h.xy) + std::fabs(h.yy) + std::fabs(h.yz),
+	                 std::fabs(h.xz) + std::fabs(h.yz) + std::fabs(h.zz)});
+}
+
+// The relative residual that rounding the point alone produces (the 2D ResidualOfConditions'
+// floors): the body coordinates are formed from world points as large as `reach`, so ξ is known
+// to δ = ε·reach / scale, within which the residual's rows move by (‖H_A‖ + μ‖H_B‖)δ (gradients)
+// and (|∇ψA| + |∇ψB|)δ (levels). Where a level set is thin across the frame's scale (a plate or
+// needle at a low level: a normalised thickness of 1e-4) its Hessian is 1e4 times its gradient
+// and this floor 1e-11, above kRoundingFloor: no step lowers the residual below it, and a point
+// there solves the conditions to rounding (the normals opposed to about the floor, in radians).
+double RoundingFloor(const PairFrame3& f, const NewtonPoint3& p)
+{
+	const double reach = std::max({Length(f.World(p.xi)), Length(f.a.pose.p), Length(f.b.pose.p)});
+	const double delta = std::numeric_limits<double>::epsilon() * reach / f.scale;
+	const double gradNoise = delta * (RowSumNorm(p.A.hess) + p.mu * RowSumNorm(p.B.hess));
+	const double levelNoise = delta * (Length(p.A.grad) + Length(p.B.grad));
+	const double gradScale = LengthSquared(p.A.grad) + p.mu * p.mu * LengthSquared(p.B.grad) + 1e-300;
+	const double levelScale = p.A.psi * p.A.psi + p.B.psi * p.B.psi + 1e-300;
+	const double floor = std::sqrt(gradNoise * gradNoise / gradScale + levelNoise * levelNoise / levelScale);
+	return std::isfinite(floor) ? std::max(kRoundingFloor, floor) : kRoundingFloor;
+}
 
 // The residual for multiplier μ at an evaluated point: fills r and returns its size relative to
 // its terms.
@@ -177,11 +205,13 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 			return result;
 		}
 		TakeLeastSquaresMultiplier(p);
+		// At the rounding floor (computed where a step fails: a comparison on the common path).
+		auto atFloor = [&]() { return p.relative < RoundingFloor(f, p); };
 		bool shifted = false; // a truncated or recovery step: its length says nothing of convergence
 		const Solve4Result step = NewtonStep(p, shifted);
 		if (!(step.rcond > 1e-14))
 		{
-			if (p.relative < kRoundingFloor)
+			if (atFloor())
 				break; // singular only at the answer's rounding level
 			result.failure = "singular or ill-conditioned Jacobian";
 			return result;
@@ -203,11 +233,12 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 			return w12 * (q.r[0] * q.r[0] + q.r[1] * q.r[1] + q.r[2] * q.r[2]) + w3 * q.r[3] * q.r[3];
 		};
 		const double merit0 = merit(p);
-		const int halvings = p.relative < kRoundingFloor ? 3 : 40; // at the rounding floor more cannot help
 		double alpha = 1.0;
-		bool accepted = false;
-		for (int k = 0; k < halvings; ++k, alpha *= 0.5)
+		bool accepted = false, floorReached = false;
+		for (int k = 0; k < 40; ++k, alpha *= 0.5)
 		{
+			if (k == 3 && (floorReached = atFloor()))
+				break; // at the rounding floor more halvings cannot help
 			Evaluate(f, p.xi + alpha * Vec3(delta[0], delta[1], delta[2]), p.nu + alpha * delta[3], *trial);
 			if (trial->finite && merit(*trial) <= (1.0 - 1e-4 * alpha) * merit0)
 			{
@@ -217,7 +248,7 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 		}
 		if (!accepted)
 		{
-			if (p.relative < kRoundingFloor)
+			if (floorReached || atFloor())
 				break; // rounding floor: no step lowers the residual any more
 			if (!RecoveryStep(f, p, w12, w3, trust, merit0, merit, *trial))
 			{
@@ -253,6 +284,22 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 	result.normal = Normalize(p.A.grad);
 	result.multiplier = p.mu;
 	return result;
+}
+
+bool ConditionsHold3(const PairFrame3& f, Vec3 xi)
+{
+	const GaugeValue3 A = f.Eval(f.a, xi, true), B = f.Eval(f.b, xi, true);
+	const double eps = std::numeric_limits<double>::epsilon();
+	const double la = Length(A.grad), lb = Length(B.grad), mean = 0.5 * (A.psi + B.psi);
+	if (!(A.finite && B.finite && la > 0.0 && lb > 0.0 && mean > 0.0))
+		return false;
+	const double reach = std::max({Length(f.World(xi)), Length(f.a.pose.p), Length(f.b.pose.p)});
+	const double delta = eps * reach / f.scale;
+	const double level = std::fabs(A.psi - B.psi) / mean, levelFloor = (la + lb) * delta / mean + 4.0 * eps;
+	const double angle = Length(A.grad / la + B.grad / lb);
+	const double angleFloor = (RowSumNorm(A.hess) / la + RowSumNorm(B.hess) / lb) * delta + 4.0 * eps;
+	return level <= std::max(1e-11, std::min(10.0 * levelFloor, 1e-9 / f.power)) &&
+	       angle <= std::max(1e-8, 10.0 * angleFloor);
 }
 
 bool GeometricStart3(const PairFrame3& f, Vec3& xi, double& mu)

@@ -10,6 +10,16 @@ namespace b2a
 /// Newton on the common level from (ξ, ν = log μ) in a frame (Newton3.cpp); `level` is λA there.
 LevelResult3 RunNewton3(const PairFrame3& frame, Vec3 xi, double nu, const SolverOptions& options);
 
+/// Whether ξ solves the common level's conditions to the standard of a converged answer: the
+/// gauges ψA, ψB within 1e-11 of each other, or ten times what the rounding of the point alone
+/// leaves (the point known to ε times the largest world coordinate, moving each ψ by |∇ψ| that
+/// much) up to 1e-9 of the level (the gauges to 1e-9/q); and the normals opposed to 1e-8 rad
+/// (a normal's error is a few times this misalignment: 1.4e-6 rad at 4.6e-7 on a thin plate;
+/// flat faces touching face to face leave 5e-10 that no step removes), or ten times the turn of
+/// the normals within the point's rounding (each Hessian over its gradient times it), where
+/// double precision does not determine them (centres within 1e-8 of the size of each other).
+bool ConditionsHold3(const PairFrame3& frame, Vec3 xi);
+
 /// The point between the centres where ψA = ψB, and μ balancing the gradients there; false
 /// when the centres coincide.
 bool GeometricStart3(const PairFrame3& frame, Vec3& xi, double& mu);
