@@ -155,8 +155,11 @@ bool OnHeartAxis(const Posed& p, V X, double size)
 /// up to `reach` = max(|X|, |cA|, |cB|), rounded to eps·reach: that moves a level by
 /// eps·reach·|∇λ| and, along a contact whose level sets curve by κA + κB, the point by
 /// eps/(κA + κB). At a heart's tip the level grows like |x|^{2/3} and the library's Brent search on
-/// the kink stops at ~1e-9 of the size: floors of 1e-9 (point) and 1e-8 (level) there.
-void SetFloors(const Config& c, const Posed& A, const Posed& B, V X, LD L, bool tip, Check& k)
+/// the kink stops at ~1e-9 of the size: floors of 1e-9 (point) and 1e-8 (level) there. The normal
+/// at one heart's tip is the other particle's, which the tip's rounding (eps·reach, across that
+/// particle's surface) turns by eps·reach·κ, κ its level curve's curvature (`tipCurvature`; 0
+/// where no tip or both tips): beside a needle's end, κ·size ~ 1e5 to 1e6, that is ~1e-6 rad.
+void SetFloors(const Config& c, const Posed& A, const Posed& B, V X, LD L, bool tip, LD tipCurvature, Check& k)
 {
 	const LD eps = std::numeric_limits<double>::epsilon();
 	const LD reach = std::max({ref::Len(X), ref::Len(A.pose.p), ref::Len(B.pose.p)});
@@ -170,7 +173,29 @@ void SetFloors(const Config& c, const Posed& A, const Posed& B, V X, LD L, bool 
 	{
 		k.pointFloor = std::max(k.pointFloor, 1e-9);
 		k.levelFloor = std::max(k.levelFloor, 1e-8);
+		if (tipCurvature > 0.0L)
+			k.normalRounding = double(eps * reach * tipCurvature);
 	}
+}
+
+/// The curvature of p's level curve through X, |tᵀHt|/|∇λ| (t the unit tangent).
+LD LevelCurveCurvature(const Posed& p, V X)
+{
+	const Deriv d = WorldDeriv(p, X);
+	const LD g = ref::Len(d.grad);
+	const V t = PerpL(d.grad);
+	return std::fabs(ref::Dot(t, HessTimes(d, t))) / (g * g * g);
+}
+
+/// At one heart's tip (A's or B's, not both), the other particle's level-curve curvature there
+/// (SetFloors); else 0.
+LD TipCurvature(const Config& c, const Posed& A, const Posed& B, V X)
+{
+	const bool tipA = OnHeartAxis(A, X, c.size), tipB = OnHeartAxis(B, X, c.size);
+	if (tipA == tipB)
+		return 0.0L;
+	const LD kappa = LevelCurveCurvature(tipA ? B : A, X);
+	return std::isfinite(kappa) ? kappa : 0.0L;
 }
 
 /// Check a level answer of `problem` between A and B (B → A for the swapped one-sided scale).
@@ -206,7 +231,11 @@ Check CheckAnswer(const Config& c, const Answer& r, const Posed& A, const Posed&
 		k.condition = double(1.0L / (c.answer.curvature * c.size));
 	k.reference = double(built ? c.answer.level : L);
 	if (L > 0.0L)
-		SetFloors(c, A, B, built ? c.answer.point : X, built ? c.answer.level : L, atTip || (built && c.corner), k);
+	{
+		const V at = built ? c.answer.point : X;
+		const bool tip = atTip || (built && c.corner);
+		SetFloors(c, A, B, at, built ? c.answer.level : L, tip, tip ? TipCurvature(c, A, B, at) : 0.0L, k);
+	}
 	if (built)
 	{
 		k.exact = true;
@@ -1194,7 +1223,7 @@ Json CheckJson(const Check& k)
 	return Json{{"point_error", num(k.point)}, {"level_error", num(k.level)}, {"normal_angle_error", num(k.normal)},
 	            {"point_error_estimate", num(k.estimate)}, {"separation_error", num(k.separation)},
 	            {"surface_point_error", num(k.surface)}, {"overlap_axis_excess", num(k.axisExcess)},
-	            {"point_condition", num(k.condition)},
+	            {"point_condition", num(k.condition)}, {"normal_rounding", num(k.normalRounding)},
 	            {"against_built_answer", k.exact}, {"grazing", k.grazing}, {"touching_mismatch", k.touchingWrong}};
 }
 
