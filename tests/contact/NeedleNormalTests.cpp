@@ -94,7 +94,45 @@ const std::vector<Config> kDeepNeedles = {
 	{298732, Spec::Super(0x1.026e3cee8f67ep-8, 0x1.2e589b0c33e0bp-17, 0x1.4p+4, 0x1p+1), Spec::Super(0x1.797c983f22a9fp-15, 0x1.81208028e255ap-6, 0x1.2p+4, 0x1.2p+4), Pose(Vec2(-0x1.1ab134deffec6p-8, 0x1.1c610608c665bp-8), 0x1.f393393aed58cp+0), Pose(Vec2(-0x1.36ab245d618d6p-8, 0x1.e3083dc9fee61p-9), 0x1.e13452515eb3p+0)},
 	{479467, Spec::Super(0x1.3b0f3143dbddbp-1, 0x1.dc96bd95d0238p+6, 0x1p+1, 0x1.1p+4), Spec::Super(0x1.18ab2202740cfp+1, 0x1.f38d89ce785cdp+7, 0x1.9f4e17d1da8dep+3, 0x1.75e706b6762b1p+3), Pose(Vec2(0x1.4c141026add2fp+7, -0x1.04f7f473914fbp+7), 0x1.811bca0dd5f7p+1), Pose(Vec2(0x1.4750777e5edd9p+7, -0x1.eded5777add2ap+6), 0x1.072e05e2e7816p+1)},
 };
+
+// A needle (0.0007 × 0.22, n = 15, m = 3.75) 600 sizes from a 5.5 × 640 plank: their common level
+// is 3.7e24, where A's level set is a needle of aspect 2.6e7 reaching 7.7e5 from its centre.
+// Newton and the min–max stop short, and the grid sampling B's level-C surface (aspect 1.8e5)
+// straddled the minimum of λA over it (level 1.2e26 for 3.7e24); A's samples find it.
+const Config kFarNeedle = {583459, Spec::Super(0x1.6ec24bbf4c26fp-11, 0x1.c53b6dc885962p-3, 0x1.e17fe3a170563p+3, 0x1.e0a127080d28bp+1),
+                           Spec::Super(0x1.62e26fab25221p+2, 0x1.405a867d1c9a6p+9, 0x1.e78ebe17cfa35p+3, 0x1.46a568c97f753p+2),
+                           Pose(Vec2(-0x1.0e7403cdb0ccfp-2, 0x1.38796719f17ebp-4), 0x1.a16e9acf8ffc8p-1),
+                           Pose(Vec2(0x1.849fcdd6d7a32p+6, -0x1.357f9497849eep+9), 0x1.a1540585059ccp-1)};
 } // namespace
+
+TEST_CASE("needle normals: a needle far from a plank (common level 3.7e24) gets its level to 1e-9 and normal to 1e-6 rad")
+{
+	const Config& c = kFarNeedle;
+	const ShapePtr a = c.a.Make(), b = c.b.Make();
+	const ref::RefShape ra = c.a.Ref(), rb = c.b.Ref();
+	const double size = std::min(a->BoundingRadius(), b->BoundingRadius());
+	for (const auto& [pa, pb] : Neighbours(c, size))
+	{
+		const ref::RefPose qa = ref::Of(pa), qb = ref::Of(pb);
+		for (bool swapped : {false, true})
+		{
+			CAPTURE(swapped);
+			const LevelResult r = swapped ? SolveCommonLevel(*b, pb, *a, pa) : SolveCommonLevel(*a, pa, *b, pb);
+			REQUIRE(r.Ok());
+			const V Xr = ref::PolishLagrange(ra, qa, rb, qb, ref::FromVec(r.point), true);
+			const LD level = ra.Level(ref::ToBodyL(qa, Xr));
+			REQUIRE(Solved(ra, qa, rb, qb, Xr, true, level));
+			CHECK(level > 1e24L);
+			CHECK(double(std::fabs(LD(r.level) - level) / level) <= 1e-9);
+			// A's gradient direction, from the first particle solved.
+			const V n = ref::Unit(ref::WorldDeriv(swapped ? rb : ra, swapped ? qb : qa, Xr).grad);
+			CHECK(double(Angle(ref::FromVec(r.normal), n)) <= 1e-6);
+		}
+		const ContactResult contact = ComputeContact(*a, pa, *b, pb);
+		REQUIRE(contact.Ok());
+		CHECK_FALSE(contact.touching);
+	}
+}
 
 TEST_CASE("needle normals: a heart beside a needle gets the contact normal to 1e-6 rad")
 {
