@@ -1331,32 +1331,40 @@ Json CategoriesJson(const std::array<CategoryStats, int(Category::count)>& categ
 	return cats;
 }
 
-/// The one-line summary on stdout: the in-range counts and worst errors, then each beyond-range
-/// kind's configurations and failures.
+/// The one-line summary on stdout: in range, the counts of configurations with a failure, a wrong
+/// verdict, a wrong normal or level (the standard), those not judged (non-unique normals) and
+/// those judged against their rounding (ill-conditioned), and the worst errors of the well-posed
+/// answers; then each beyond-range kind apart with its own counts.
 std::string SummaryLine(std::uint64_t count, double seconds, double cpuSeconds,
                         const std::array<RangeStats, int(Range::count)>& ranges)
 {
 	const RangeStats& in = ranges[int(Range::inRange)];
-	char text[1024];
+	char text[2048];
 	std::snprintf(text, sizeof text,
 	              "b2a_stress: %" PRIu64 " configurations in %.1f s (CPU %.1f s); in range %" PRIu64 ": %" PRIu64
 	              " failed (%" PRIu64 " below level 1e-9), %" PRIu64 " non-finite, %" PRIu64 " wrong verdicts, %" PRIu64
 	              " wrong normals (%" PRIu64 " of heart pairs, %" PRIu64 " below level 1e-9), %" PRIu64 " wrong levels (%" PRIu64
-	              " of heart pairs, %" PRIu64 " below level 1e-9; %" PRIu64
-	              " non-unique normals not judged), %" PRIu64 " inaccurate; worst of superellipse pairs: point %.2g, level"
-	              " %.2g, normal %.2g rad; of heart pairs: point %.2g, level %.2g, normal %.2g rad; %" PRIu64
-	              " warm steps (%" PRIu64 " wrong normals, %" PRIu64 " wrong levels); beyond range:",
+	              " of heart pairs, %" PRIu64 " below level 1e-9), %" PRIu64 " inaccurate; not judged: %" PRIu64
+	              " non-unique normals (%" PRIu64 " tip against tip, %" PRIu64 " one-sided scale at its tip);"
+	              " ill-conditioned, judged against 100 times their rounding: %" PRIu64 " normals, %" PRIu64
+	              " levels; worst of superellipse pairs: point %.2g, level %.2g, normal %.2g rad; of heart pairs: point"
+	              " %.2g, level %.2g, normal %.2g rad; %" PRIu64 " warm steps (%" PRIu64 " wrong normals, %" PRIu64
+	              " wrong levels); beyond range:",
 	              count, seconds, cpuSeconds, in.configurations, in.failed, in.failedDeep, in.nonFinite, in.wrongVerdicts,
 	              in.wrongNormals, in.wrongNormalsHearts, in.wrongNormalsDeep, in.wrongLevels, in.wrongLevelsHearts, in.wrongLevelsDeep,
-	              in.tipAgainstTip + in.scaleAtItsTip,
-	              in.inaccurate, in.worstCommon.point.value, in.worstCommon.level.value, in.worstCommon.normal.value,
+	              in.inaccurate, in.tipAgainstTip + in.scaleAtItsTip, in.tipAgainstTip, in.scaleAtItsTip, in.illNormals,
+	              in.illLevels, in.worstCommon.point.value, in.worstCommon.level.value, in.worstCommon.normal.value,
 	              in.worstHearts.point.value, in.worstHearts.level.value, in.worstHearts.normal.value, in.warmSteps,
 	              in.warmWrongNormals, in.warmWrongLevels);
 	std::string line = text;
 	for (int r = int(Range::inRange) + 1; r < int(Range::count); ++r)
 	{
-		std::snprintf(text, sizeof text, "%s %s %" PRIu64 " (%" PRIu64 " failed)", r == int(Range::inRange) + 1 ? "" : ",",
-		              RangeName(Range(r)), ranges[r].configurations, ranges[r].failed);
+		const RangeStats& k = ranges[r];
+		std::snprintf(text, sizeof text,
+		              "%s %s %" PRIu64 " (%" PRIu64 " failed, %" PRIu64 " wrong verdicts, %" PRIu64 " wrong normals, %" PRIu64
+		              " wrong levels)",
+		              r == int(Range::inRange) + 1 ? "" : ",", RangeName(Range(r)), k.configurations, k.failed,
+		              k.wrongVerdicts, k.wrongNormals, k.wrongLevels);
 		line += text;
 	}
 	return line;
