@@ -5,11 +5,14 @@
 // References, in long double (ContactReference.h; the library is used only for the poses'
 // cosine and sine): the optimality conditions solved by Newton (PolishLagrange) from the
 // library's point, and held to be solved (levels to 1e-12, normals opposed to 1e-12 rad) before
-// they are used, so that a reference that did not converge fails the test rather than passes it.
+// they are used, so that a reference that did not converge fails the test rather than passes it;
+// at a heart's tip, where there are no conditions, the tip's one-sided scale (PolishTip of
+// StressReference.h).
 #include <doctest/doctest.h>
 
 #include "b2analytic/b2analytic.h"
 #include "ContactReference.h"
+#include "StressReference.h"
 
 #include <cmath>
 #include <string>
@@ -42,8 +45,8 @@ struct Config
 };
 
 /// The configuration and its neighbours: B moved by 1e-9 and 1e-7 of the smaller particle's
-/// bounding radius along each axis, and A turned by ±1e-7 rad.
-std::vector<std::pair<Pose, Pose>> Neighbours(const Config& c, double size)
+/// bounding radius along each axis, and A turned by ±`turn` rad (1e-7 unless given).
+std::vector<std::pair<Pose, Pose>> Neighbours(const Config& c, double size, double turn = 1e-7)
 {
 	std::vector<std::pair<Pose, Pose>> poses{{c.pa, c.pb}};
 	for (double d : {1e-9, -1e-7})
@@ -51,7 +54,7 @@ std::vector<std::pair<Pose, Pose>> Neighbours(const Config& c, double size)
 		poses.push_back({c.pa, Pose(c.pb.p + Vec2(d * size, 0.0), c.pb.q)});
 		poses.push_back({c.pa, Pose(c.pb.p + Vec2(0.0, d * size), c.pb.q)});
 	}
-	for (double t : {1e-7, -1e-7})
+	for (double t : {turn, -turn})
 		poses.push_back({Pose(c.pa.p, std::atan2(c.pa.q.s, c.pa.q.c) + t), c.pb});
 	return poses;
 }
@@ -103,7 +106,52 @@ const Config kFarNeedle = {583459, Spec::Super(0x1.6ec24bbf4c26fp-11, 0x1.c53b6d
                            Spec::Super(0x1.62e26fab25221p+2, 0x1.405a867d1c9a6p+9, 0x1.e78ebe17cfa35p+3, 0x1.46a568c97f753p+2),
                            Pose(Vec2(-0x1.0e7403cdb0ccfp-2, 0x1.38796719f17ebp-4), 0x1.a16e9acf8ffc8p-1),
                            Pose(Vec2(0x1.849fcdd6d7a32p+6, -0x1.357f9497849eep+9), 0x1.a1540585059ccp-1)};
+
+// A heart's tip against a needle's end (curvature 1e8 to 1e9 of the heart's size): the normal is
+// the needle's at the tip, which turned by 1.1e-6 to 1.7e-6 rad with the tip's place rounded in
+// world coordinates (the centres 10 to 1e5 of the needle's size apart).
+const std::vector<Config> kHeartTips = {
+	{93551, Spec::Heart(0x1.9799c428d09dep+4), Spec::Super(0x1.2d680f5ea3365p-8, 0x1.aebb0c028aed6p-18, 0x1p+1, 0x1p+1), Pose(Vec2(-0x1.379e6fe27852ep+7, 0x1.1573a4fc4fdfp+5), 0x1.5a101b032a534p+0), Pose(Vec2(-0x1.1c64e2a1a824cp-7, 0x1.3918c046306aap-8), -0x1.5eb07e263f3a8p-1)},
+	{96670, Spec::Super(0x1.12df1ed80f1ep-20, 0x1.0624dd2f1a9fcp-10, 0x1p+1, 0x1p+1), Spec::Heart(0x1.d5ed73171d33fp+3), Pose(Vec2(-0x1.731d63c1720bfp-10, -0x1.744972738d272p-11), -0x1.70b18aea405b4p+0), Pose(Vec2(0x1.ab622de831b4dp-2, 0x1.e77d2fa1d3319p+1), -0x1.c058ffd27c92p-4)},
+	{492370, Spec::Super(0x1.6723c2b870a7bp-1, 0x1.6fc2509c193f3p-11, 0x1p+1, 0x1p+1), Spec::Heart(0x1.2783ae3279f81p+19), Pose(Vec2(0x1.0cf9f030cc77cp-2, 0x1.82ed889cb755bp+0), -0x1.4bda27b48fb5p-2), Pose(Vec2(0x1.ecb781c681fdep+5, 0x1.84875593e3ed9p+9), -0x1.437a654a78ap-4)},
+	{587016, Spec::Super(0x1.da75a3718ada9p-17, 0x1.f6cb346d05869p-8, 0x1p+1, 0x1p+1), Spec::Heart(0x1.a4d82bb7a7881p+7), Pose(Vec2(-0x1.1aacc84586d57p-6, -0x1.8aca152d86b2cp-6), -0x1.7f2f5a2ba7822p+0), Pose(Vec2(-0x1.764ae0cfd1d22p+2, 0x1.a8445a68e290fp+3), 0x1.a795e8636dbap-2)},
+};
 } // namespace
+
+TEST_CASE("needle normals: a heart's tip against a needle's end gets the needle's normal to 1e-6 rad")
+{
+	for (const Config& c : kHeartTips)
+	{
+		const ShapePtr a = c.a.Make(), b = c.b.Make();
+		const ref::RefShape ra = c.a.Ref(), rb = c.b.Ref();
+		const double size = std::min(a->BoundingRadius(), b->BoundingRadius());
+		const bool heartA = c.a.heart;
+		// A turned so that the tip moves by 1e-7 of the needle's size (the heart's centre is
+		// 10 to 1e5 of it away).
+		for (const auto& [pa, pb] : Neighbours(c, size, 1e-7 * size / Distance(c.pa.p, c.pb.p)))
+		{
+			CAPTURE(c.index);
+			const ContactResult r = ComputeContact(*a, pa, *b, pb);
+			REQUIRE(r.Ok());
+			const stress::Posed A{ra, ref::Of(pa)}, B{rb, ref::Of(pb)};
+			const stress::Posed &heart = heartA ? A : B, &needle = heartA ? B : A;
+			// The contact's point is the heart's tip: on its axis, below its centre.
+			const V x = ref::ToBodyL(heart.pose, ref::FromVec(r.point));
+			REQUIRE(std::fabs(x.x) <= 1e-9L * size);
+			REQUIRE(x.y < 0.0L);
+			// The heart at its own level there (its tip fixed), or scaled onto the needle's surface.
+			const bool own = std::fabs(stress::LevelAt(heart, ref::FromVec(r.point)) / heart.shape.Own() - 1.0L) < 1e-6L;
+			const stress::LevelSolution tip = own ? stress::PolishTip(needle, heart, false, 1.0L)
+			                                      : stress::PolishTip(heart, needle, true, x.y * x.y);
+			REQUIRE(tip.ok);
+			if (own)
+				CHECK(std::fabs(stress::LevelAt(needle, tip.point) / LD(r.level) - 1.0L) <= 1e-9L);
+			const V out = ref::Unit(stress::WorldDeriv(needle, tip.point).grad); // the needle's outward normal
+			const V n = heartA ? V{-out.x, -out.y} : out;
+			CHECK(double(Angle(ref::FromVec(r.normal), n)) <= 1e-6);
+		}
+	}
+}
 
 TEST_CASE("needle normals: a needle far from a plank (common level 3.7e24) gets its level to 1e-9 and normal to 1e-6 rad")
 {
