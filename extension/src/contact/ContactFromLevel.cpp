@@ -162,6 +162,8 @@ Vec2 OpposedNormal(const Shape& a, Vec2 xa, Vec2 na, const Shape& b, Vec2 xb, Ve
 	return std::isfinite(ka + kb) && LengthSquared(weighted) > 0.0 ? Normalize(weighted) : Normalize(mean);
 }
 
+} // namespace
+
 // A body point x of `from` in the body frame of `to`, R_toᵀ((c_from − c_to) + R_from·x), with the
 // sum carried exactly (TwoSum; the products' roundings by fma): what is left is the rounding of the
 // result itself, not of the centres' coordinates and of R_from·x, which cancel where the point is
@@ -194,21 +196,27 @@ Vec2 CompensatedBodyPoint(const Pose& from, Vec2 x, const Pose& to)
 // the contact normal is O's at the corner, which turns with the corner's place across O's surface
 // by O's curvature: beside a needle's end (curvature 1e8 of a heart's size) the centres' rounding
 // alone turned it by 1e-6 rad. The corner's body point in O's frame, without that rounding
-// (CompensatedBodyPoint): T's own corner point where T is at its own surface there, else, O at its
-// own surface, the point on T's corner ray where O's level is its own, by Newton along the ray
-// (from the given point, within rounding of it, so two or three steps).
+// (CompensatedBodyPoint), on the surface of whichever particle is at its own level there (the
+// nearer one, relative to its own level; the other is the scaled one): T's own corner point, or
+// the point on T's corner ray where O's level is its own, by Newton along the ray (from the given
+// point, within rounding of it, so two or three steps). Where neither is (a common level), the
+// given point.
 Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, const Pose& po)
 {
 	const int k = CornerAt(t, xt);
 	if (k < 0)
 		return ToBody(po, ToWorld(pt, xt));
 	const double ownT = t.SurfaceLevel(), ownO = o.SurfaceLevel();
+	const double unitT = ownT != 0.0 ? std::fabs(ownT) : 1.0, unitO = ownO != 0.0 ? std::fabs(ownO) : 1.0;
 	const Vec2 u = t.CornerDirections()[size_t(k)];
-	if (std::fabs(t.Level(xt) - ownT) <= 1e-9 * std::max(std::fabs(ownT), 1.0))
+	double s = Dot(u, xt);
+	Vec2 x = CompensatedBodyPoint(pt, s * u, po);
+	const double gapT = std::fabs(t.Level(xt) - ownT) / unitT, gapO = std::fabs(o.Level(x) - ownO) / unitO;
+	if (gapT <= 1e-9 && gapT < gapO)
 	{
 		// T's corner point, its distance along the ray polished on T's own level (RadiusAt
 		// stops a few roundings short).
-		double s = Dot(u, t.CornerPoints()[size_t(k)]);
+		s = Dot(u, t.CornerPoints()[size_t(k)]);
 		for (int it = 0; it < 2; ++it)
 		{
 			const LevelDerivatives d = t.Derivatives(s * u);
@@ -219,16 +227,13 @@ Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, cons
 		}
 		return CompensatedBodyPoint(pt, s * u, po);
 	}
-	const Vec2 along = InvRotate(po.q, Rotate(pt.q, u)); // d/ds of the point s·u in O's frame
-	double s = Dot(u, xt);
-	Vec2 x = CompensatedBodyPoint(pt, s * u, po);
-	if (!(std::fabs(o.Level(x) - ownO) <= 1e-6 * std::max(std::fabs(ownO), 1.0)))
+	if (!(gapO <= 1e-6))
 		return x;
+	const Vec2 along = InvRotate(po.q, Rotate(pt.q, u)); // d/ds of the point s·u in O's frame
 	for (int it = 0; it < 4; ++it)
 	{
 		const LevelDerivatives d = o.Derivatives(x);
-		const double slope = Dot(d.gradient, along);
-		const double step = (d.value - ownO) / slope;
+		const double step = (d.value - ownO) / Dot(d.gradient, along);
 		if (!std::isfinite(step) || !(std::fabs(step) <= 1e-6 * s))
 			break;
 		s -= step;
@@ -239,6 +244,8 @@ Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, cons
 	return x;
 }
 
+namespace
+{
 // The contact normal at X, from A to B: the mean of A's outward and B's inward unit normals,
 // which agree at a tangency. A shape whose corner X is gives no normal; the other's is used.
 // When the two normals point the same way, one particle's centre lies inside the other and X is

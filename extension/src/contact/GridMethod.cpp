@@ -1,6 +1,7 @@
 // b2analytic: the grid method (paper section 3) with local refinement, and its common level.
 #include "b2analytic/CommonLevel.h"
 
+#include "contact/ContactParts.h"
 #include "contact/GridScale.h"
 #include "contact/LevelAlongLine.h"
 #include "contact/PairFrame.h"
@@ -357,7 +358,21 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 		crossed = CornerRayCrossing(walk, p, q, value, point) || crossed;
 	}
 	if (crossed)
+	{
+		// Beside the valley a smooth minimum may lie lower in the same bracket (where Newton from
+		// the vertex and the sample, drawn into the valley, failed): Newton from each neighbour,
+		// held to its side of the crossing, as beside B's corners. Where the valley is the
+		// minimum, A's level is concave on both sides of it (|s|^{2/3}) and each stops at its
+		// first curvature test.
+		const Vec2 valley = point;
+		double v;
+		Vec2 x;
+		if (RefineNewton(walk, pl, valley, pl, value, reach, v, x) && v < value)
+			value = v, point = x;
+		if (RefineNewton(walk, valley, ph, ph, value, reach, v, x) && v < value)
+			value = v, point = x;
 		return;
+	}
 	double theta = sampleTheta;
 	Refine(walk, lo, hi, theta, value);
 	if (theta != sampleTheta)
@@ -811,7 +826,11 @@ LevelResult GridScan::Solve(Vec2* bodyGradientA)
 		return result;
 	}
 	const Vec2 X = ToWorld(pb, bestPoint);
-	const Vec2 gradientA = a.Gradient(ToBody(pa, X));
+	// At B's corner (and not A's) the normal is A's gradient there, which beside a needle turns
+	// by its curvature times the corner's rounding in world coordinates: placed without it.
+	const Vec2 xa = ToBody(pa, X);
+	const bool onlyCornerB = CornerAt(b, bestPoint) >= 0 && CornerAt(a, xa) < 0;
+	const Vec2 gradientA = a.Gradient(onlyCornerB ? CornerInOther(b, pb, bestPoint, a, pa) : xa);
 	if (bodyGradientA)
 		*bodyGradientA = gradientA;
 	Vec2 normal = Rotate(pa.q, gradientA);
