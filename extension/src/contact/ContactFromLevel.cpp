@@ -199,7 +199,7 @@ Vec2 CompensatedBodyPoint(const Pose& from, Vec2 x, const Pose& to)
 // (CompensatedBodyPoint), on the surface of whichever particle is at its own level there (the
 // nearer one, relative to its own level; the other is the scaled one): T's own corner point, or
 // the point on T's corner ray where O's level is its own, by Newton along the ray (from the given
-// point, within rounding of it, so two or three steps). Where neither is (a common level), the
+// point, within rounding of it, so one step). Where neither is (a common level), the
 // given point.
 Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, const Pose& po)
 {
@@ -216,6 +216,8 @@ Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, cons
 	{
 		// T's corner point, its distance along the ray polished on T's own level (RadiusAt
 		// stops a few roundings short).
+		// (From within 1e-6 of the root Newton's next step is below 1e-12 of the last: one
+		// step where the first is below 1e-8 of s, two at most.)
 		s = Dot(u, t.CornerPoints()[size_t(k)]);
 		for (int it = 0; it < 2; ++it)
 		{
@@ -224,6 +226,8 @@ Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, cons
 			if (!std::isfinite(step) || !(std::fabs(step) <= 1e-6 * s))
 				break;
 			s -= step;
+			if (std::fabs(step) <= 1e-8 * s)
+				break;
 		}
 		return CompensatedBodyPoint(pt, s * u, po);
 	}
@@ -238,7 +242,7 @@ Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, cons
 			break;
 		s -= step;
 		x = CompensatedBodyPoint(pt, s * u, po);
-		if (std::fabs(step) <= 1e-16 * s)
+		if (std::fabs(step) <= 1e-8 * s)
 			break;
 	}
 	return x;

@@ -1,7 +1,6 @@
 // b2analytic: the grid method (paper section 3) with local refinement, and its common level.
 #include "b2analytic/CommonLevel.h"
 
-#include "contact/ContactParts.h"
 #include "contact/GridScale.h"
 #include "contact/LevelAlongLine.h"
 #include "contact/PairFrame.h"
@@ -826,11 +825,7 @@ LevelResult GridScan::Solve(Vec2* bodyGradientA)
 		return result;
 	}
 	const Vec2 X = ToWorld(pb, bestPoint);
-	// At B's corner (and not A's) the normal is A's gradient there, which beside a needle turns
-	// by its curvature times the corner's rounding in world coordinates: placed without it.
-	const Vec2 xa = ToBody(pa, X);
-	const bool onlyCornerB = CornerAt(b, bestPoint) >= 0 && CornerAt(a, xa) < 0;
-	const Vec2 gradientA = a.Gradient(onlyCornerB ? CornerInOther(b, pb, bestPoint, a, pa) : xa);
+	const Vec2 gradientA = a.Gradient(ToBody(pa, X));
 	if (bodyGradientA)
 		*bodyGradientA = gradientA;
 	Vec2 normal = Rotate(pa.q, gradientA);
