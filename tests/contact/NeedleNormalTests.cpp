@@ -110,13 +110,16 @@ const Config kFarNeedle = {583459, Spec::Super(0x1.6ec24bbf4c26fp-11, 0x1.c53b6d
 // A heart's tip against a needle's end (curvature 1e8 to 1e9 of the heart's size): the normal is
 // the needle's at the tip, which turned by 1.1e-6 to 1.7e-6 rad with the tip's place rounded in
 // world coordinates (the centres 10 to 1e5 of the needle's size apart). And a heart 1.6e-10 below
-// its own level at the tip of an 85:1 plank (23851), whose tip is not its own-level corner.
+// its own level at the tip of an 85:1 plank (23851), whose tip is not its own-level corner; and a
+// heart at its own level at a 1000:1 needle's end scaled 2.3e-11 below its own (811943), where the
+// heart's level at the rounded point, 1e-10 off across its tip's kink, looked the farther one.
 const std::vector<Config> kHeartTips = {
 	{93551, Spec::Heart(0x1.9799c428d09dep+4), Spec::Super(0x1.2d680f5ea3365p-8, 0x1.aebb0c028aed6p-18, 0x1p+1, 0x1p+1), Pose(Vec2(-0x1.379e6fe27852ep+7, 0x1.1573a4fc4fdfp+5), 0x1.5a101b032a534p+0), Pose(Vec2(-0x1.1c64e2a1a824cp-7, 0x1.3918c046306aap-8), -0x1.5eb07e263f3a8p-1)},
 	{96670, Spec::Super(0x1.12df1ed80f1ep-20, 0x1.0624dd2f1a9fcp-10, 0x1p+1, 0x1p+1), Spec::Heart(0x1.d5ed73171d33fp+3), Pose(Vec2(-0x1.731d63c1720bfp-10, -0x1.744972738d272p-11), -0x1.70b18aea405b4p+0), Pose(Vec2(0x1.ab622de831b4dp-2, 0x1.e77d2fa1d3319p+1), -0x1.c058ffd27c92p-4)},
 	{492370, Spec::Super(0x1.6723c2b870a7bp-1, 0x1.6fc2509c193f3p-11, 0x1p+1, 0x1p+1), Spec::Heart(0x1.2783ae3279f81p+19), Pose(Vec2(0x1.0cf9f030cc77cp-2, 0x1.82ed889cb755bp+0), -0x1.4bda27b48fb5p-2), Pose(Vec2(0x1.ecb781c681fdep+5, 0x1.84875593e3ed9p+9), -0x1.437a654a78ap-4)},
 	{587016, Spec::Super(0x1.da75a3718ada9p-17, 0x1.f6cb346d05869p-8, 0x1p+1, 0x1p+1), Spec::Heart(0x1.a4d82bb7a7881p+7), Pose(Vec2(-0x1.1aacc84586d57p-6, -0x1.8aca152d86b2cp-6), -0x1.7f2f5a2ba7822p+0), Pose(Vec2(-0x1.764ae0cfd1d22p+2, 0x1.a8445a68e290fp+3), 0x1.a795e8636dbap-2)},
 	{23851, Spec::Heart(0x1.2e5360c5888c7p+4), Spec::Super(0x1.04d24079034c1p-6, 0x1.8751e970e58e5p-13, 0x1.2cd528eda107dp+4, 0x1.5cb83c070cb0fp+3), Pose(Vec2(-0x1.2e65770166161p+1, 0x1.dd449b4306fa1p+1), 0x1.20f3edd4b3d9cp-1), Pose(Vec2(-0x1.354223e392611p-5, 0x1.472126a2e144p-5), 0x1.8b21f581b9998p+0)},
+	{811943, Spec::Super(0x1.7bec7ccb4778bp-12, 0x1.7304f1de83cbep-2, 0x1p+1, 0x1p+1), Spec::Heart(0x1.824d14661a68cp-6), Pose(Vec2(0x1.4951d552aac06p-3, 0x1.05e632ed62691p-3), -0x1.547d66457fb4fp+1), Pose(Vec2(0x1.61f8bc5310883p-2, -0x1.6224cde4f1791p-2), -0x1.83dc6027f730fp+1)},
 };
 } // namespace
 
@@ -142,9 +145,9 @@ TEST_CASE("needle normals: a heart's tip against a needle's end gets the needle'
 			REQUIRE(std::fabs(x.x) <= 1e-9L * size);
 			REQUIRE(x.y < 0.0L);
 			// The heart at its own level there (its tip fixed), or scaled onto the needle's surface:
-			// whichever is nearer its own level.
+			// whichever is nearer its own level (the heart's on its axis, x.y², where it is smooth).
 			const V X = ref::FromVec(r.point);
-			const bool own = std::fabs(stress::LevelAt(heart, X) / heart.shape.Own() - 1.0L) <
+			const bool own = std::fabs(x.y * x.y / heart.shape.Own() - 1.0L) <
 			                 std::fabs(stress::LevelAt(needle, X) / needle.shape.Own() - 1.0L);
 			const stress::LevelSolution tip = own ? stress::PolishTip(needle, heart, false, 1.0L)
 			                                      : stress::PolishTip(heart, needle, true, x.y * x.y);

@@ -211,7 +211,9 @@ Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, cons
 	const Vec2 u = t.CornerDirections()[size_t(k)];
 	double s = Dot(u, xt);
 	Vec2 x = CompensatedBodyPoint(pt, s * u, po);
-	const double gapT = std::fabs(t.Level(xt) - ownT) / unitT, gapO = std::fabs(o.Level(x) - ownO) / unitO;
+	// (T's level on its ray, where it is smooth: across the ray it grows like |x|^{2/3} at a
+	// heart's tip, and the given point's rounding alone would move it by 1e-10 of itself.)
+	const double gapT = std::fabs(t.Level(s * u) - ownT) / unitT, gapO = std::fabs(o.Level(x) - ownO) / unitO;
 	if (gapT <= 1e-9 && gapT < gapO)
 	{
 		// T's corner point, its distance along the ray polished on T's own level (RadiusAt
