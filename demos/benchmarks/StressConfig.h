@@ -252,13 +252,25 @@ inline bool Build(Config& c, double level, double normalAngle, V offset, bool re
 	c.centreInside = LevelAt(PB, PA.pose.p) <= B.Own() || LevelAt(PA, PB.pose.p) <= A.Own();
 	if (c.corner)
 	{
-		// A tip has no gradient, so the conditions do not apply there; the built answer is off by
-		// the rounding of the centres only (~1e-16 of their coordinates).
+		// A tip has no gradient, so the conditions do not apply there. The built answer is off by
+		// the rounding of the centres (~1e-16 of their coordinates), which beside a needle turns
+		// the normal by ~1e-6 rad: the one-sided scale at one tip is solved again for the rounded
+		// centres (PolishTip); tip against tip keeps the built answer (its normal is not unique).
 		c.answer.point = offset;
 		c.answer.level = level;
 		c.answer.normal = nu;
 		c.answer.lastStep = ref::Len(ref::FromVec(c.pa.p) - pa) + ref::Len(ref::FromVec(c.pb.p) - pb);
 		c.answer.ok = true;
+		if (c.problem == Problem::scaleA && !c.tipAgainstTip)
+		{
+			const LevelSolution tip = PolishTip(PA, PB, sa.corner, level);
+			if (tip.ok)
+			{
+				c.answer.point = tip.point;
+				c.answer.level = tip.level;
+				c.answer.normal = tip.normal;
+			}
+		}
 	}
 	else
 	{

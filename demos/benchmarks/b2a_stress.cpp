@@ -155,8 +155,11 @@ bool OnHeartAxis(const Posed& p, V X, double size)
 /// up to `reach` = max(|X|, |cA|, |cB|), rounded to eps·reach: that moves a level by
 /// eps·reach·|∇λ| and, along a contact whose level sets curve by κA + κB, the point by
 /// eps/(κA + κB). At a heart's tip the level grows like |x|^{2/3} and the library's Brent search on
-/// the kink stops at ~1e-9 of the size: floors of 1e-9 (point) and 1e-8 (level) there.
-void SetFloors(const Config& c, const Posed& A, const Posed& B, V X, LD L, bool tip, Check& k)
+/// the kink stops at ~1e-9 of the size: floors of 1e-9 (point) and 1e-8 (level) there. The normal
+/// at one heart's tip is the other particle's, which the tip's rounding (eps·reach, across that
+/// particle's surface) turns by eps·reach·κ, κ its level curve's curvature (`tipCurvature`; 0
+/// where no tip or both tips): beside a needle's end, κ·size ~ 1e5 to 1e6, that is ~1e-6 rad.
+void SetFloors(const Config& c, const Posed& A, const Posed& B, V X, LD L, bool tip, LD tipCurvature, Check& k)
 {
 	const LD eps = std::numeric_limits<double>::epsilon();
 	const LD reach = std::max({ref::Len(X), ref::Len(A.pose.p), ref::Len(B.pose.p)});
@@ -170,7 +173,29 @@ void SetFloors(const Config& c, const Posed& A, const Posed& B, V X, LD L, bool 
 	{
 		k.pointFloor = std::max(k.pointFloor, 1e-9);
 		k.levelFloor = std::max(k.levelFloor, 1e-8);
+		if (tipCurvature > 0.0L)
+			k.normalRounding = double(eps * reach * tipCurvature);
 	}
+}
+
+/// The curvature of p's level curve through X, |tᵀHt|/|∇λ| (t the unit tangent).
+LD LevelCurveCurvature(const Posed& p, V X)
+{
+	const Deriv d = WorldDeriv(p, X);
+	const LD g = ref::Len(d.grad);
+	const V t = PerpL(d.grad);
+	return std::fabs(ref::Dot(t, HessTimes(d, t))) / (g * g * g);
+}
+
+/// At one heart's tip (A's or B's, not both), the other particle's level-curve curvature there
+/// (SetFloors); else 0.
+LD TipCurvature(const Config& c, const Posed& A, const Posed& B, V X)
+{
+	const bool tipA = OnHeartAxis(A, X, c.size), tipB = OnHeartAxis(B, X, c.size);
+	if (tipA == tipB)
+		return 0.0L;
+	const LD kappa = LevelCurveCurvature(tipA ? B : A, X);
+	return std::isfinite(kappa) ? kappa : 0.0L;
 }
 
 /// Check a level answer of `problem` between A and B (B → A for the swapped one-sided scale).
@@ -206,7 +231,11 @@ Check CheckAnswer(const Config& c, const Answer& r, const Posed& A, const Posed&
 		k.condition = double(1.0L / (c.answer.curvature * c.size));
 	k.reference = double(built ? c.answer.level : L);
 	if (L > 0.0L)
-		SetFloors(c, A, B, built ? c.answer.point : X, built ? c.answer.level : L, atTip || (built && c.corner), k);
+	{
+		const V at = built ? c.answer.point : X;
+		const bool tip = atTip || (built && c.corner);
+		SetFloors(c, A, B, at, built ? c.answer.level : L, tip, tip ? TipCurvature(c, A, B, at) : 0.0L, k);
+	}
 	if (built)
 	{
 		k.exact = true;
@@ -1194,7 +1223,7 @@ Json CheckJson(const Check& k)
 	return Json{{"point_error", num(k.point)}, {"level_error", num(k.level)}, {"normal_angle_error", num(k.normal)},
 	            {"point_error_estimate", num(k.estimate)}, {"separation_error", num(k.separation)},
 	            {"surface_point_error", num(k.surface)}, {"overlap_axis_excess", num(k.axisExcess)},
-	            {"point_condition", num(k.condition)},
+	            {"point_condition", num(k.condition)}, {"normal_rounding", num(k.normalRounding)},
 	            {"against_built_answer", k.exact}, {"grazing", k.grazing}, {"touching_mismatch", k.touchingWrong}};
 }
 
@@ -1302,32 +1331,40 @@ Json CategoriesJson(const std::array<CategoryStats, int(Category::count)>& categ
 	return cats;
 }
 
-/// The one-line summary on stdout: the in-range counts and worst errors, then each beyond-range
-/// kind's configurations and failures.
+/// The one-line summary on stdout: in range, the counts of configurations with a failure, a wrong
+/// verdict, a wrong normal or level (the standard), those not judged (non-unique normals) and
+/// those judged against their rounding (ill-conditioned), and the worst errors of the well-posed
+/// answers; then each beyond-range kind apart with its own counts.
 std::string SummaryLine(std::uint64_t count, double seconds, double cpuSeconds,
                         const std::array<RangeStats, int(Range::count)>& ranges)
 {
 	const RangeStats& in = ranges[int(Range::inRange)];
-	char text[1024];
+	char text[2048];
 	std::snprintf(text, sizeof text,
 	              "b2a_stress: %" PRIu64 " configurations in %.1f s (CPU %.1f s); in range %" PRIu64 ": %" PRIu64
 	              " failed (%" PRIu64 " below level 1e-9), %" PRIu64 " non-finite, %" PRIu64 " wrong verdicts, %" PRIu64
 	              " wrong normals (%" PRIu64 " of heart pairs, %" PRIu64 " below level 1e-9), %" PRIu64 " wrong levels (%" PRIu64
-	              " of heart pairs, %" PRIu64 " below level 1e-9; %" PRIu64
-	              " non-unique normals not judged), %" PRIu64 " inaccurate; worst of superellipse pairs: point %.2g, level"
-	              " %.2g, normal %.2g rad; of heart pairs: point %.2g, level %.2g, normal %.2g rad; %" PRIu64
-	              " warm steps (%" PRIu64 " wrong normals, %" PRIu64 " wrong levels); beyond range:",
+	              " of heart pairs, %" PRIu64 " below level 1e-9), %" PRIu64 " inaccurate; not judged: %" PRIu64
+	              " non-unique normals (%" PRIu64 " tip against tip, %" PRIu64 " one-sided scale at its tip);"
+	              " ill-conditioned, judged against 100 times their rounding: %" PRIu64 " normals, %" PRIu64
+	              " levels; worst of superellipse pairs: point %.2g, level %.2g, normal %.2g rad; of heart pairs: point"
+	              " %.2g, level %.2g, normal %.2g rad; %" PRIu64 " warm steps (%" PRIu64 " wrong normals, %" PRIu64
+	              " wrong levels); beyond range:",
 	              count, seconds, cpuSeconds, in.configurations, in.failed, in.failedDeep, in.nonFinite, in.wrongVerdicts,
 	              in.wrongNormals, in.wrongNormalsHearts, in.wrongNormalsDeep, in.wrongLevels, in.wrongLevelsHearts, in.wrongLevelsDeep,
-	              in.tipAgainstTip + in.scaleAtItsTip,
-	              in.inaccurate, in.worstCommon.point.value, in.worstCommon.level.value, in.worstCommon.normal.value,
+	              in.inaccurate, in.tipAgainstTip + in.scaleAtItsTip, in.tipAgainstTip, in.scaleAtItsTip, in.illNormals,
+	              in.illLevels, in.worstCommon.point.value, in.worstCommon.level.value, in.worstCommon.normal.value,
 	              in.worstHearts.point.value, in.worstHearts.level.value, in.worstHearts.normal.value, in.warmSteps,
 	              in.warmWrongNormals, in.warmWrongLevels);
 	std::string line = text;
 	for (int r = int(Range::inRange) + 1; r < int(Range::count); ++r)
 	{
-		std::snprintf(text, sizeof text, "%s %s %" PRIu64 " (%" PRIu64 " failed)", r == int(Range::inRange) + 1 ? "" : ",",
-		              RangeName(Range(r)), ranges[r].configurations, ranges[r].failed);
+		const RangeStats& k = ranges[r];
+		std::snprintf(text, sizeof text,
+		              "%s %s %" PRIu64 " (%" PRIu64 " failed, %" PRIu64 " wrong verdicts, %" PRIu64 " wrong normals, %" PRIu64
+		              " wrong levels)",
+		              r == int(Range::inRange) + 1 ? "" : ",", RangeName(Range(r)), k.configurations, k.failed,
+		              k.wrongVerdicts, k.wrongNormals, k.wrongLevels);
 		line += text;
 	}
 	return line;

@@ -526,17 +526,15 @@ TEST_CASE("grid scale: a heart's tip against a smooth particle is A's level at t
 	CHECK(atTip >= 12); // (most neighbours keep the tip as the minimum)
 }
 
-TEST_CASE("grid scale (known failure): a smooth minimum beside a corner ray's valley in the same bracket" *
-          doctest::should_fail())
+TEST_CASE("grid scale: a smooth minimum beside a corner ray's valley in the same bracket")
 {
 	// From b2a_stress --seed 1 (configuration 144854): two hearts of α = 2.6e5 overlapping, A
 	// rescaled onto B's surface. Between two of B's samples A's level has both the valley where
 	// B's curve crosses A's tip ray (1182.7) and, beside it, the smooth minimum (1173.0); Newton
-	// failed from both starts and the crossing alone is taken. Running the bracketing search
-	// after every crossing finds it, but costs heart pairs 1.2 to 3 times their time (Newton
-	// fails wherever the minimum is a tip's valley, the common case). Each pose and its
-	// neighbours (B turned by 1e-6 and 1e-3 rad, A moved by 1e-3 of the size) against the
-	// brute-force minimum.
+	// from the vertex and the sample, drawn into the valley, failed, and the crossing alone was
+	// taken. Newton from each neighbour, held to its side of the crossing, finds it. Each pose
+	// and its neighbours (B turned by 1e-6 and 1e-3 rad, A moved by 1e-3 of the size) against
+	// the brute-force minimum.
 	const double alpha = 0x1.fec4d77c102fcp+18;
 	const Posed a = Heart(alpha, Vec2(0x1.343073a8cda31p+11, -0x1.9e2bf824384aap+9), 0x1.369c2095e53b8p-2);
 	const Pose pb(Vec2(0x1.7054d238bd137p+11, -0x1.5d89388e937f3p+10), 0x1.431ade2410e8p+1);

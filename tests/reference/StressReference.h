@@ -335,6 +335,46 @@ inline LevelSolution Polish(const Posed& A, const Posed& B, Problem problem, V X
 	return sol;
 }
 
+/// The solution of a one-sided scale (problem scaleA) at one heart's tip, A's or B's (not both),
+/// for the placements as given: a pair is built around a tip in long double and its centres are
+/// then rounded to double, which moves the tip by ~1e-16 of the centres' coordinates, and beside
+/// a needle (curvature 1e8 to 1e9 of its size) that turns the contact normal by ~1e-6 rad.
+/// At B's tip T (fixed, B at its own level): L = λA(T), the normal A's gradient there. At A's
+/// tip T(L) = A's body point (0, −√L): Newton on λB(T(L)) = B's own level from L, the normal
+/// B's inward one. Not ok when Newton does not settle (to 1e-18 of L) in 30 steps.
+inline LevelSolution PolishTip(const Posed& A, const Posed& B, bool tipOfA, LD L)
+{
+	LevelSolution sol;
+	if (!tipOfA)
+	{
+		sol.point = World(B, V{0.0L, -std::sqrt(B.shape.Own())});
+		sol.level = LevelAt(A, sol.point);
+		sol.normal = ref::Unit(WorldDeriv(A, sol.point).grad);
+		sol.ok = std::isfinite(sol.level) && sol.level > 0.0L;
+		return sol;
+	}
+	const LD own = B.shape.Own();
+	for (int it = 0; it < 30 && !sol.ok; ++it)
+	{
+		const LD r = std::sqrt(L);
+		const V T = World(A, V{0.0L, -r});
+		const Deriv b = WorldDeriv(B, T);
+		// dT/dL = A's body direction (0, −1/(2√L)) in the world.
+		const V dT = ref::RotateL(A.pose, V{0.0L, -0.5L / r});
+		const LD slope = ref::Dot(b.grad, dT);
+		const LD step = (b.value - own) / slope;
+		if (!std::isfinite(step) || !(L - step > 0.0L))
+			return sol;
+		L -= step;
+		sol.ok = std::fabs(step) <= 1e-18L * L;
+	}
+	sol.level = L;
+	sol.point = World(A, V{0.0L, -std::sqrt(L)});
+	const V nb = ref::Unit(WorldDeriv(B, sol.point).grad);
+	sol.normal = V{-nb.x, -nb.y};
+	return sol;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Contact points on the normal line, and the coincident-centre overlap depth
 // ---------------------------------------------------------------------------------------------

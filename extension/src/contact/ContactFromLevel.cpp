@@ -162,6 +162,96 @@ Vec2 OpposedNormal(const Shape& a, Vec2 xa, Vec2 na, const Shape& b, Vec2 xb, Ve
 	return std::isfinite(ka + kb) && LengthSquared(weighted) > 0.0 ? Normalize(weighted) : Normalize(mean);
 }
 
+} // namespace
+
+// A body point x of `from` in the body frame of `to`, R_toᵀ((c_from − c_to) + R_from·x), with the
+// sum carried exactly (TwoSum; the products' roundings by fma): what is left is the rounding of the
+// result itself, not of the centres' coordinates and of R_from·x, which cancel where the point is
+// far from `from`'s centre and near `to`'s (a heart's tip beside a needle 1e4 of its size away:
+// 1e-16 of the heart's size is 1e-12 of the needle's, and turns its normal by 1e-6 rad).
+Vec2 CompensatedBodyPoint(const Pose& from, Vec2 x, const Pose& to)
+{
+	auto sum = [](double a, double b, double& low) {
+		const double s = a + b, bb = s - a;
+		low += (a - (s - bb)) + (b - bb);
+		return s;
+	};
+	auto product = [](double a, double b, double& low) {
+		const double p = a * b;
+		low += std::fma(a, b, -p);
+		return p;
+	};
+	auto component = [&](double c0, double c1, double r0, double x0, double r1, double x1) {
+		double low = 0.0;
+		const double rotated = sum(product(r0, x0, low), product(r1, x1, low), low);
+		const double offset = sum(c0, -c1, low);
+		return sum(offset, rotated, low) + low;
+	};
+	const Vec2 w(component(from.p.x, to.p.x, from.q.c, x.x, -from.q.s, x.y),
+	             component(from.p.y, to.p.y, from.q.s, x.x, from.q.c, x.y));
+	return InvRotate(to.q, w);
+}
+
+// At a corner of one particle (T, the body point xt on its corner ray) and not of the other (O),
+// the contact normal is O's at the corner, which turns with the corner's place across O's surface
+// by O's curvature: beside a needle's end (curvature 1e8 of a heart's size) the centres' rounding
+// alone turned it by 1e-6 rad. The corner's body point in O's frame, without that rounding
+// (CompensatedBodyPoint), on the surface of whichever particle is at its own level there (the
+// nearer one, relative to its own level; the other is the scaled one): T's own corner point, or
+// the point on T's corner ray where O's level is its own, by Newton along the ray (from the given
+// point, within rounding of it, so one step). Where neither is (a common level), the
+// given point.
+Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, const Pose& po)
+{
+	const int k = CornerAt(t, xt);
+	if (k < 0)
+		return ToBody(po, ToWorld(pt, xt));
+	const double ownT = t.SurfaceLevel(), ownO = o.SurfaceLevel();
+	const double unitT = ownT != 0.0 ? std::fabs(ownT) : 1.0, unitO = ownO != 0.0 ? std::fabs(ownO) : 1.0;
+	const Vec2 u = t.CornerDirections()[size_t(k)];
+	double s = Dot(u, xt);
+	Vec2 x = CompensatedBodyPoint(pt, s * u, po);
+	// (T's level on its ray, where it is smooth: across the ray it grows like |x|^{2/3} at a
+	// heart's tip, and the given point's rounding alone would move it by 1e-10 of itself.)
+	const double gapT = std::fabs(t.Level(s * u) - ownT) / unitT, gapO = std::fabs(o.Level(x) - ownO) / unitO;
+	if (gapT <= 1e-9 && gapT < gapO)
+	{
+		// T's corner point, its distance along the ray polished on T's own level (RadiusAt
+		// stops a few roundings short).
+		// (From within 1e-6 of the root Newton's next step is below 1e-12 of the last: one
+		// step where the first is below 1e-8 of s, two at most.)
+		s = Dot(u, t.CornerPoints()[size_t(k)]);
+		for (int it = 0; it < 2; ++it)
+		{
+			const LevelDerivatives d = t.Derivatives(s * u);
+			const double step = (d.value - ownT) / Dot(d.gradient, u);
+			if (!std::isfinite(step) || !(std::fabs(step) <= 1e-6 * s))
+				break;
+			s -= step;
+			if (std::fabs(step) <= 1e-8 * s)
+				break;
+		}
+		return CompensatedBodyPoint(pt, s * u, po);
+	}
+	if (!(gapO <= 1e-6))
+		return x;
+	const Vec2 along = InvRotate(po.q, Rotate(pt.q, u)); // d/ds of the point s·u in O's frame
+	for (int it = 0; it < 4; ++it)
+	{
+		const LevelDerivatives d = o.Derivatives(x);
+		const double step = (d.value - ownO) / Dot(d.gradient, along);
+		if (!std::isfinite(step) || !(std::fabs(step) <= 1e-6 * s))
+			break;
+		s -= step;
+		x = CompensatedBodyPoint(pt, s * u, po);
+		if (std::fabs(step) <= 1e-8 * s)
+			break;
+	}
+	return x;
+}
+
+namespace
+{
 // The contact normal at X, from A to B: the mean of A's outward and B's inward unit normals,
 // which agree at a tangency. A shape whose corner X is gives no normal; the other's is used.
 // When the two normals point the same way, one particle's centre lies inside the other and X is
@@ -172,8 +262,20 @@ Vec2 ContactNormal(const Shape& a, const Pose& pa, const Shape& b, const Pose& p
                    const Vec2* gradientA, bool cornerA, bool cornerB)
 {
 	const Vec2 xa = ToBody(pa, X), xb = ToBody(pb, X);
-	const Vec2 na = cornerA ? Vec2() : Normalize(Rotate(pa.q, gradientA ? *gradientA : a.Gradient(xa)));
-	const Vec2 nb = cornerB ? Vec2() : Normalize(Rotate(pb.q, b.Gradient(xb)));
+	Vec2 na, nb;
+	if (cornerA != cornerB)
+	{
+		// One corner: the other's normal at it, placed without the centres' rounding.
+		if (cornerB)
+			na = Normalize(Rotate(pa.q, a.Gradient(CornerInOther(b, pb, xb, a, pa))));
+		else
+			nb = Normalize(Rotate(pb.q, b.Gradient(CornerInOther(a, pa, xa, b, pb))));
+	}
+	else if (!cornerA)
+	{
+		na = Normalize(Rotate(pa.q, gradientA ? *gradientA : a.Gradient(xa)));
+		nb = Normalize(Rotate(pb.q, b.Gradient(xb)));
+	}
 	const bool hasA = LengthSquared(na) > 0.0, hasB = LengthSquared(nb) > 0.0;
 	Vec2 n;
 	if (hasA && hasB)

@@ -43,6 +43,16 @@ inline int CornerAt(const Shape& s, Vec2 x)
 	return -1;
 }
 
+/// A body point x of `from` in the body frame of `to`, with the offset of the centres and the
+/// rotated point summed exactly (TwoSum, fma): only the result's own rounding is left.
+Vec2 CompensatedBodyPoint(const Pose& from, Vec2 x, const Pose& to);
+
+/// The point xt on a corner ray of t (t's body frame) in o's body frame, placed without the
+/// centres' rounding (CompensatedBodyPoint): t's corner point where t is at its own surface
+/// there, else the point on the ray where o's level is its own. Beside a needle the other
+/// particle's normal at a corner turns by its curvature times that rounding.
+Vec2 CornerInOther(const Shape& t, const Pose& pt, Vec2 xt, const Shape& o, const Pose& po);
+
 /// ContactFromLevel, given A's body gradient at the level point where the caller has it
 /// (`gradientA`, or null): the grid's contact needs it again for its one-side test.
 ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const LevelResult& level,

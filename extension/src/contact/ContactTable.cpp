@@ -123,6 +123,24 @@ LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, con
 			// deep inside each other were answered 0.5 off in level, 3 rad in normal).
 			const int spentBoth = r.iterations;
 			r = CheckGridCommonLevel(a, pa, b, pb, options, SolveCommonLevelGrid(a, pa, b, pb, options));
+			if (!r.Ok())
+			{
+				// The grid samples B's level-C surface; where the minimum of λA over it is a
+				// sliver its samples straddle (A's level-C set a needle of aspect 1e7 against
+				// B's of 1e5, far apart: C ~ 1e24), A's samples find it, as the contact's grid
+				// tries both sides (GridContact).
+				const int spentOne = r.iterations;
+				LevelResult other = CheckGridCommonLevel(b, pb, a, pa, options, SolveCommonLevelGrid(b, pb, a, pa, options));
+				other.iterations += spentOne;
+				if (other.Ok())
+				{
+					other.normal = -other.normal;
+					other.multiplier = other.multiplier > 0.0 ? 1.0 / other.multiplier : 0.0;
+				}
+				else
+					other.failure = r.failure;
+				r = other;
+			}
 			r.iterations += spentBoth;
 		}
 		if (r.Ok())

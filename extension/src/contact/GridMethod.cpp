@@ -357,7 +357,21 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 		crossed = CornerRayCrossing(walk, p, q, value, point) || crossed;
 	}
 	if (crossed)
+	{
+		// Beside the valley a smooth minimum may lie lower in the same bracket (where Newton from
+		// the vertex and the sample, drawn into the valley, failed): Newton from each neighbour,
+		// held to its side of the crossing, as beside B's corners. Where the valley is the
+		// minimum, A's level is concave on both sides of it (|s|^{2/3}) and each stops at its
+		// first curvature test.
+		const Vec2 valley = point;
+		double v;
+		Vec2 x;
+		if (RefineNewton(walk, pl, valley, pl, value, reach, v, x) && v < value)
+			value = v, point = x;
+		if (RefineNewton(walk, valley, ph, ph, value, reach, v, x) && v < value)
+			value = v, point = x;
 		return;
+	}
 	double theta = sampleTheta;
 	Refine(walk, lo, hi, theta, value);
 	if (theta != sampleTheta)
