@@ -1,8 +1,8 @@
 // b2a validation tests (label validation): the bucket pile of b2a_demo_game at full size, 300
 // particles in a chain bucket 16 m wide in Box2D's testbed settings, falls asleep within 1.5 times
 // the time of the same pile of Box2D 8-gons inscribed in the same shapes, in the median of seeds
-// 1-5: ellipses and circles. The mixed pile does not yet (a known failure here), nor the
-// superellipse n = 4 and heart piles (docs/benchmarks.md, "Sleeping piles"). A pile sleeps when
+// 1-5: ellipses, circles and the mixed pile. The superellipse n = 4 and heart piles do not yet
+// (docs/benchmarks.md, "Sleeping piles"). A pile sleeps when
 // its last mover stops, and a smooth particle rocking on a flat face loses no energy, so one
 // seed's time can be many times the median's: the median is what the test holds a family to.
 #include "box2d/BucketScene.h"
@@ -29,9 +29,9 @@ void MedianAsleep300(const std::string& family, double& analytic, double& polygo
 }
 } // namespace
 
-TEST_CASE("300 ellipses or circles in a bucket fall asleep within 1.5 times the same pile of 8-gons, median of five seeds")
+TEST_CASE("300 ellipses, circles or mixed particles in a bucket fall asleep within 1.5 times the same pile of 8-gons, median of five seeds")
 {
-	for (const std::string family : {"ellipse", "circle"})
+	for (const std::string family : {"ellipse", "circle", "mixed"})
 	{
 		CAPTURE(family);
 		double analytic = 0.0, polygons = 0.0;
@@ -41,17 +41,4 @@ TEST_CASE("300 ellipses or circles in a bucket fall asleep within 1.5 times the 
 		CHECK(polygons < 60.0);
 		CHECK(analytic <= 1.5 * polygons);
 	}
-}
-
-// Known failure: the mixed pile's median is 16.0 s against its 8-gons' 9.2 s (1.74 times), one
-// seed of five never asleep within 60 s; its last movers rock and roll on curved faces.
-TEST_CASE("300 mixed particles in a bucket fall asleep within 1.5 times the same pile of 8-gons (known failure)" *
-          doctest::should_fail())
-{
-	double analytic = 0.0, polygons = 0.0;
-	MedianAsleep300("mixed", analytic, polygons);
-	CAPTURE(analytic);
-	CAPTURE(polygons);
-	CHECK(polygons < 60.0);
-	CHECK(analytic <= 1.5 * polygons);
 }

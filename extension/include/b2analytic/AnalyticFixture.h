@@ -59,6 +59,14 @@ public:
 	using std::logic_error::logic_error;
 };
 
+/// A contact with an analytic side that touched at the last step keeps touching (one manifold
+/// point, its separation positive) while its surfaces stay within this gap; one that did not
+/// touch starts at separation zero. Box2D wakes both bodies whenever a contact starts or stops
+/// touching, and a grazing contact between two creeping particles of a settled pile would
+/// otherwise cross zero by a hundredth of a millimetre step after step and keep the pile awake.
+/// A twentieth of Box2D's linear slop (0.25 mm in metres).
+constexpr double kContactHoldGap = 0.05 * b2_linearSlop;
+
 /// The analytic part of a fixture definition.
 struct AnalyticFixtureDef
 {

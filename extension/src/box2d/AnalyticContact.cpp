@@ -3,6 +3,8 @@
 
 #include "box2d/AnalyticProxyShape.h"
 
+#include "b2analytic/AnalyticFixture.h"
+
 #include "b2analytic/Contact.h"
 #include "b2analytic/ContactManifold.h"
 #include "b2analytic/PolygonContact.h"
@@ -40,6 +42,13 @@ const bool g_installed = AnalyticContact::Install();
 
 Vec2 V(const b2Vec2& v) { return Vec2(v.x, v.y); }
 b2Vec2 F(Vec2 v) { return b2Vec2(float(v.x), float(v.y)); }
+
+// kContactHoldGap (AnalyticFixture.h): the point kept, with its positive separation, is one
+// Box2D's velocity solver holds at no approach and its position solver leaves alone. In a
+// settled pile of 300 superellipses n = 4 a grazing contact crossed zero separation by 1e-5 m
+// every step or two, and b2Contact::Update's wake-ups zeroed its bodies' sleep timers with
+// every body below the sleep tolerances: the pile slept seconds after it had stopped.
+constexpr double kHoldGap = kContactHoldGap;
 
 // Whether the axis n (unit, from A towards B) separates the particles: B's lowest point along n
 // lies above A's highest, (cB − cA)·n − h_A(n) − h_B(−n) > 0 with h the support values in the
@@ -272,7 +281,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		// overlap for many pairs whose particles are apart (elongated ones especially).
 		const Shape& shapeA = *pa.shape;
 		const Shape& shapeB = *pb.shape;
-		const double reach = pa.radius + pb.radius;
+		const double reach = pa.radius + pb.radius + (IsTouching() ? kHoldGap : 0.0);
 		const Vec2 between = poseB.p - poseA.p;
 		if (LengthSquared(between) > reach * reach)
 		{
@@ -297,7 +306,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 				return;
 		}
 		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, m_solver ? *m_solver : SolverOptions{}, &m_warm);
-		m_wasTouching = c.Ok() && c.separation <= 0.0;
+		m_wasTouching = c.Ok() && c.separation <= kHoldGap;
 		if (c.Ok())
 		{
 			m_lastNormal = c.normal;
@@ -393,8 +402,21 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	// the face's side as the manifold's A: where that is the contact's B, the manifold is built
 	// from B's side. (Which side is non-convex is fixed for the contact: its cache keeps its roles.)
 	const bool fromB = sideA.shape && !sideA.shape->IsConvex() && !sideB.point && (!sideB.shape || sideB.shape->IsConvex());
-	const ContactManifold m = fromB ? BuildContactManifold(FlipContact(c), sideB, sideA, m_patchTolerance, m_patchMinWidth, radii, &m_patch)
-	                                : BuildContactManifold(c, sideA, sideB, m_patchTolerance, m_patchMinWidth, radii, &m_patch);
+	const ContactResult oriented = fromB ? FlipContact(c) : c;
+	// A contact that touched at the last step (b2Contact::Update still holds that flag while it
+	// evaluates) and is now apart by at most the hold gap: its manifold is built as if the radii
+	// were larger by the gap (faces and their ends as at touching, measured from the lifted
+	// level), and Box2D, which measures separations from the points, sees the true, positive
+	// gap: a face lifted by a fraction of a millimetre keeps its two points, as it would touching.
+	double held = 0.0;
+	if (IsTouching())
+	{
+		const double gap = Dot(oriented.pointB - oriented.pointA, oriented.normal) - radii;
+		if (gap > 0.0 && gap <= kHoldGap)
+			held = gap + 1e-12 * (1.0 + radii);
+	}
+	const ContactManifold m = fromB ? BuildContactManifold(oriented, sideB, sideA, m_patchTolerance, m_patchMinWidth, radii + held, &m_patch)
+	                                : BuildContactManifold(oriented, sideA, sideB, m_patchTolerance, m_patchMinWidth, radii + held, &m_patch);
 	Write(m, manifold, xfA, xfB, pa.skin, pb.skin, fromB);
 }
 
