@@ -235,7 +235,9 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 		const Vec2 g = outer.Gradient(q);
 		if (!(mb.fx < surface) || !(LengthSquared(g) > 0.0) || !std::isfinite(LengthSquared(g)))
 			continue;
-		const Vec2 u = PartNormal(outer, g, inner, Rotate(rel.q, inner.Gradient(qi)));
+		// (Against a convex particle, outer's gradient alone: with the blend there too, the mixed
+		// pile of the game bucket slept later, medians of seeds 1-10 15.1 s against 11.2 s.)
+		const Vec2 u = outer.IsConvex() || inner.IsConvex() ? Normalize(g) : PartNormal(outer, g, inner, Rotate(rel.q, inner.Gradient(qi)));
 		// The depth: where the line from q along u leaves outer, bracketed by steps that double
 		// from the first-order guess (at most 24, out to 2R) and found by Brent's method to
 		// 1e-12 of the size. (Newton's steps along u, which a corner's gradient turns across the
