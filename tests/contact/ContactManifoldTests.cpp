@@ -458,7 +458,7 @@ TEST_CASE("BuildContactManifold: a heart's tip wedged against another keeps two 
 	// wedge of a settled pile). B slides by 4 mm and turns by 4 mrad in 200 steps. The tip part's
 	// normal from B's surface inside A is A's level gradient at a corner of A, which turns over
 	// across A's axis: given that, the part came and went and the normal turned by up to 0.31 rad
-	// a step (9.9 rad in all) with 36 one-point manifolds. Each part's normal now leans to the
+	// a step (9.9 rad in all) with 37 one-point manifolds. Each part's normal now leans to the
 	// side that is smooth there, so the manifold keeps both parts at every step and its normal
 	// turns by a few times the pose change over the parts' distance, except once, where the tip
 	// part first shows in B's surface inside A (found before from A's tip inside B, with the same
