@@ -451,3 +451,52 @@ TEST_CASE("BuildContactManifold: a heart's lobes within a chain link's skin both
 	}
 	CHECK((m.points[0].pointB.x > pose.p.x) != (m.points[1].pointB.x > pose.p.x));
 }
+
+TEST_CASE("BuildContactManifold: a heart's tip wedged against another keeps two parts and a normal that turns with the poses")
+{
+	// Heart A's tip pokes 3 mm into heart B beside a second part of their overlap 6 cm away (the
+	// wedge of a settled pile). B slides by 4 mm and turns by 4 mrad in 200 steps. The tip part's
+	// normal from B's surface inside A is A's level gradient at a corner of A, which turns over
+	// across A's axis: given that, the part came and went and the normal turned by up to 0.31 rad
+	// a step (9.9 rad in all) with 37 one-point manifolds. Each part's normal now leans to the
+	// side that is smooth there, so the manifold keeps both parts at every step and its normal
+	// turns by a few times the pose change over the parts' distance, except once, where the tip
+	// part first shows in B's surface inside A (found before from A's tip inside B, with the same
+	// normal to 1.2 degrees and twice the depth, which weighs the common normal).
+	const double alpha = 0.2;
+	const ShapePtr heart = MakeHeart(alpha);
+	const Pose pa(Vec2(0.0, 0.0), 0.0);
+	const double r = 0.99268, phi = 3.9601, theta = 5.7476; // (found by a search over poses 3 mm deep)
+	const Vec2 centre = r * Vec2(std::cos(phi), std::sin(phi));
+	ManifoldCache cache;
+	constexpr int kSteps = 200;
+	const double span = 0.004;
+	Vec2 last;
+	std::vector<double> turns;
+	int twoParts = 0;
+	for (int i = 0; i <= kSteps; ++i)
+	{
+		CAPTURE(i);
+		const double s = double(i) / kSteps - 0.5;
+		const Pose pb(centre + Vec2(span * s, 0.0), theta + span * s);
+		const ContactResult c = ComputeContact(*heart, pa, *heart, pb);
+		REQUIRE(c.Ok());
+		const ContactManifold m = BuildContactManifold(c, ManifoldSide{heart.get(), pa}, ManifoldSide{heart.get(), pb}, kTol, 0.0, 0.0, &cache);
+		twoParts += m.count == 2 ? 1 : 0;
+		if (i > 0)
+			turns.push_back(std::acos(std::clamp(Dot(m.normal, last), -1.0, 1.0)));
+		last = m.normal;
+	}
+	std::sort(turns.begin(), turns.end());
+	double total = 0.0;
+	for (double t : turns)
+		total += t;
+	// The pose change a step, as a turn of the 6 cm between the parts.
+	const double poseTurn = (span + heart->BoundingRadius() * span) / kSteps / 0.06;
+	MESSAGE("two-part manifolds " << twoParts << " of " << kSteps + 1 << "; turns: largest " << turns.back() << ", next "
+	                              << turns[turns.size() - 2] << ", total " << total << " rad; pose change " << poseTurn << " rad a step");
+	CHECK(twoParts == kSteps + 1);
+	CHECK(turns[turns.size() - 2] <= 20.0 * poseTurn);
+	CHECK(turns.back() <= 0.1);
+	CHECK(total <= 0.2);
+}

@@ -418,12 +418,19 @@ ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, c
 	if (single.points[0].separation < -apart)
 		return single; // a deep overlap (particles created inside each other): the contact alone
 	parts[0] = {c.pointA, c.pointB, c.normal, single.points[0].separation + radii};
-	auto others = [&](int count) {
+	// A part found is the contact's own where its inner surface's point (the one the search
+	// found inside the other) lies within `apart` of the contact's point on that surface. (By
+	// either point, a part at the tip of the outer particle, whose point on it lies as far from
+	// the contact's as `apart`, counted as the contact's own one step and not the next: the
+	// fallback search then named the parts with other normals, and the normal turned by 0.08 rad
+	// every step.)
+	auto others = [&](int count, bool innerIsB) {
 		int kept = 1;
 		for (int k = 1; k <= count; ++k)
 		{
 			const OverlapPart& p = parts[k];
-			if (Distance(p.pointB, c.pointB) <= apart || Distance(p.pointA, c.pointA) <= apart || p.separation - radii < -apart)
+			const double fromOwn = innerIsB ? Distance(p.pointB, c.pointB) : Distance(p.pointA, c.pointA);
+			if (fromOwn <= apart || p.separation - radii < -apart)
 				continue; // the contact's own part, or one as deep as only a deep overlap has
 			parts[kept++] = p;
 		}
@@ -436,9 +443,9 @@ ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, c
 	// (The contact's own part, which others() drops, is not refined where it surely lies within
 	// `apart` of the contact's point: OverlapSkip.)
 	const OverlapSkip ownB{c.pointB, apart}, ownA{c.pointA, apart};
-	int count = others(OverlapParts(*a.shape, a.pose, *b.shape, b.pose, true, parts + 1, kMax, &ownB));
+	int count = others(OverlapParts(*a.shape, a.pose, *b.shape, b.pose, true, parts + 1, kMax, &ownB), true);
 	if (count == 1)
-		count = others(OverlapParts(*b.shape, b.pose, *a.shape, a.pose, false, parts + 1, kMax, &ownA));
+		count = others(OverlapParts(*b.shape, b.pose, *a.shape, a.pose, false, parts + 1, kMax, &ownA), false);
 	if (count == 1)
 		return single;
 	int pick[2] = {0, 1}, deepest = 0;

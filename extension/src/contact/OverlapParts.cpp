@@ -128,6 +128,27 @@ bool SurelyWithin(const SurfaceSamples& s, int k, Vec2 p, double within, double 
 	const double deviation = std::max(s.arcDeviation[size_t(before)], s.arcDeviation[size_t(k)]);
 	return far + 4.0 * deviation + 1e-9 * size <= within;
 }
+
+// A part's normal (outer's body frame, out of outer) from outer's level gradient g at the deepest
+// point q of inner's surface inside it and inner's gradient gi there (turned to outer's frame).
+// At a smooth minimum of outer's level along inner's surface the two are opposite (g is normal to
+// inner's surface there), and either is the part's normal. At a corner of either surface (a
+// heart's tip, where its level's gradient grows without bound and turns over across the axis)
+// that side's direction flips between neighbouring poses, and the other's is the normal. Each
+// unit direction is weighted by 1/(|g|·R/λs)², its gradient against the scale of the shape's
+// own (R its bounding radius, λs its surface level): a corner's weight falls to zero where its
+// gradient diverges, so the normal goes over to the other side's continuously, in the poses too.
+Vec2 PartNormal(const Shape& outer, Vec2 g, const Shape& inner, Vec2 gi)
+{
+	auto weight = [](const Shape& shape, Vec2 gradient) {
+		const double scale = std::fabs(shape.SurfaceLevel()) / shape.BoundingRadius();
+		const double r = Length(gradient) / (scale > 0.0 ? scale : 1.0);
+		return std::isfinite(r) && r > 0.0 ? 1.0 / (r * r) : 0.0;
+	};
+	const double wo = weight(outer, g), wi = weight(inner, gi);
+	const Vec2 sum = (wo > 0.0 ? wo * Normalize(g) : Vec2()) - (wi > 0.0 ? wi * Normalize(gi) : Vec2());
+	return LengthSquared(sum) > 0.0 && std::isfinite(LengthSquared(sum)) ? Normalize(sum) : Normalize(g);
+}
 } // namespace
 
 int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const Pose& pi, bool outerIsA, OverlapPart* out, int max,
@@ -209,23 +230,33 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 		samples.NeighbourAngles(deepest, lo, hi);
 		auto levelAt = [&](double theta) { return outer.Level(ToWorld(rel, inner.SurfacePoint(theta))); };
 		const ScalarResult mb = MinimizeBrent(levelAt, lo, hi, 1e-10, 1e-12, 60);
-		const Vec2 q = ToWorld(rel, inner.SurfacePoint(mb.x)); // outer's body frame
+		const Vec2 qi = inner.SurfacePoint(mb.x);
+		const Vec2 q = ToWorld(rel, qi); // outer's body frame
 		const Vec2 g = outer.Gradient(q);
 		if (!(mb.fx < surface) || !(LengthSquared(g) > 0.0) || !std::isfinite(LengthSquared(g)))
 			continue;
-		const Vec2 u = Normalize(g);
-		double s = (surface - mb.fx) / Length(g);
-		for (int it = 0; it < 8; ++it)
+		// (Against a convex particle, outer's gradient alone: with the blend there too, the mixed
+		// pile of the game bucket slept later, medians of seeds 1-10 15.1 s against 11.2 s.)
+		const Vec2 u = outer.IsConvex() || inner.IsConvex() ? Normalize(g) : PartNormal(outer, g, inner, Rotate(rel.q, inner.Gradient(qi)));
+		// The depth: where the line from q along u leaves outer, bracketed by steps that double
+		// from the first-order guess (at most 24, out to 2R) and found by Brent's method to
+		// 1e-12 of the size. (Newton's steps along u, which a corner's gradient turns across the
+		// line, went backwards there, and the part was lost every other step.)
+		auto excess = [&](double t) { return outer.Level(q + t * u) - surface; };
+		const double size = outer.BoundingRadius();
+		double inner0 = 0.0, fin = mb.fx - surface, step = std::max((surface - mb.fx) / Length(g), 1e-6 * size);
+		double outer0 = step, fout = excess(outer0);
+		for (int it = 0; it < 24 && !(fout > 0.0) && outer0 <= 2.0 * size; ++it)
 		{
-			const LevelDerivatives d = outer.Derivatives(q + s * u);
-			const double slope = Dot(d.gradient, u);
-			if (!(slope > 0.0))
-				break;
-			const double step = (surface - d.value) / slope;
-			s += step;
-			if (std::fabs(step) <= 1e-12 * outer.BoundingRadius())
-				break;
+			inner0 = outer0;
+			fin = fout;
+			step *= 2.0;
+			outer0 += step;
+			fout = excess(outer0);
 		}
+		if (!(fout > 0.0) || !(fin <= 0.0))
+			continue;
+		const double s = FindRootBrent(excess, inner0, outer0, fin, fout, 1e-12 * size, 100).x;
 		if (!(s > 0.0) || !std::isfinite(s))
 			continue;
 		OverlapPart part;

@@ -26,7 +26,9 @@ struct OverlapSkip
 /// The parts of the overlap that the surface of `inner` shows inside `outer` (world): each local
 /// minimum of outer's level along a run of inner's cached surface samples inside outer is one
 /// part, refined between its neighbours (Brent's method on the polar angle, to 1e-10 rad). The
-/// normal is outer's gradient there and the depth the distance along it to outer's surface.
+/// normal is outer's gradient there, or, between two non-convex particles, that and inner's
+/// own normal weighted so that a corner of either (a heart's tip) gives way to the other's;
+/// the depth is the distance along it to outer's surface.
 /// `outerIsA` says which side outer is, for the normal's sense (from A to B) and the points. At
 /// most `max` parts, the deepest kept; none where inner lies wholly inside outer.
 ///
