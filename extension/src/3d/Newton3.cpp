@@ -261,7 +261,10 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 		const double moved = alpha * std::max({std::fabs(delta[0]), std::fabs(delta[1]), std::fabs(delta[2])});
 		std::swap(current, trial);
 		const bool full = limit == 1.0 && alpha == 1.0 && !shifted;
-		if ((full && moved <= options.stepTolerance) || current->relative < 1e-15)
+		// Converged only where the conditions hold at the new point (its gauges are evaluated, so
+		// the test is a comparison); else Newton goes on from it, within the cap.
+		if (((full && moved <= options.stepTolerance) || current->relative < 1e-15) &&
+		    ConditionsHold3(f, current->xi, current->A, current->B))
 			break;
 		if (it == cap)
 		{
@@ -277,6 +280,12 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 		result.failure = "converged to a point where the gradients are not opposed";
 		return result;
 	}
+	// The rounding-floor exits too: a converged status means the conditions hold.
+	if (!ConditionsHold3(f, p.xi, p.A, p.B))
+	{
+		result.failure = "Newton stopped short of a solution (its levels or normals disagree beyond rounding)";
+		return result;
+	}
 	result.status = SolveStatus::converged;
 	result.failure = "";
 	result.level = p.A.lambda;
@@ -288,7 +297,11 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 
 bool ConditionsHold3(const PairFrame3& f, Vec3 xi)
 {
-	const GaugeValue3 A = f.Eval(f.a, xi, true), B = f.Eval(f.b, xi, true);
+	return ConditionsHold3(f, xi, f.Eval(f.a, xi, true), f.Eval(f.b, xi, true));
+}
+
+bool ConditionsHold3(const PairFrame3& f, Vec3 xi, const GaugeValue3& A, const GaugeValue3& B)
+{
 	const double eps = std::numeric_limits<double>::epsilon();
 	const double la = Length(A.grad), lb = Length(B.grad), mean = 0.5 * (A.psi + B.psi);
 	if (!(A.finite && B.finite && la > 0.0 && lb > 0.0 && mean > 0.0))
