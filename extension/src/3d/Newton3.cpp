@@ -262,7 +262,10 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 		std::swap(current, trial);
 		const bool full = limit == 1.0 && alpha == 1.0 && !shifted;
 		// Converged only where the conditions hold at the new point (its gauges are evaluated, so
-		// the test is a comparison); else Newton goes on from it, within the cap.
+		// the test is a comparison); else Newton goes on from it, within the cap. (The rounding-
+		// floor exits above have the point's own rounding as their standard: near-tangent plates of
+		// aspect 100 stop there with levels 1e-9 apart, which ConditionsHold3's cap of 1e-9/q in the
+		// gauges would refuse, sending warm starts to a cold solve.)
 		if (((full && moved <= options.stepTolerance) || current->relative < 1e-15) &&
 		    ConditionsHold3(f, current->xi, current->A, current->B))
 			break;
@@ -278,12 +281,6 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 	if (!(Dot(Normalize(p.A.grad), Normalize(p.B.grad)) < -1.0 + 1e-6))
 	{
 		result.failure = "converged to a point where the gradients are not opposed";
-		return result;
-	}
-	// The rounding-floor exits too: a converged status means the conditions hold.
-	if (!ConditionsHold3(f, p.xi, p.A, p.B))
-	{
-		result.failure = "Newton stopped short of a solution (its levels or normals disagree beyond rounding)";
 		return result;
 	}
 	result.status = SolveStatus::converged;
