@@ -354,3 +354,83 @@ TEST_CASE("3D contact: a thin plate at a low level, polished to rounding (and it
 	MESSAGE("worst normal " << worstNormal << " rad, level " << worstLevel << "; grid answers " << gridAnswers << " of 24");
 	CHECK(gridAnswers >= 20); // the grid's polish takes on (nearly) all of them
 }
+
+namespace
+{
+// An answer's level and normal against the long-double polish of the conditions from its point
+// (relative level error, normal error in radians); the reference's residual in `residual`.
+std::pair<double, double> ReferenceErrors(const Pair& p, const LevelResult3& r, long double& residual)
+{
+	const r3::Shape A(*p.a), B(*p.b);
+	const r3::Pose ra(p.pa), rb(p.pb);
+	const r3::V3 X = r3::From(r.point);
+	const r3::V3 ga = ra.Rotate(A.Gradient(ra.ToBody(X))), gb = rb.Rotate(B.Gradient(rb.ToBody(X)));
+	const r3::SurfaceMinimum ref = r3::Polish(A, ra, B, rb, X, -r3::Dot(ga, gb) / r3::Dot(gb, gb), &residual);
+	const r3::V3 normal = r3::Unit(ra.Rotate(A.Gradient(ra.ToBody(ref.point))));
+	return {RelativeError(r.level, double(ref.level)), double(r3::Len(r3::From(r.normal) - normal))};
+}
+
+// Every converged answer of `solve` over random smooth pairs is a solution: its level within
+// `levelTolerance` relative and its normal within 1e-6 rad of the long-double polish; returns how
+// many were reported as failed (each with a reason).
+template <typename Solve>
+int CheckConvergedAreSolutions(Solve solve, uint64_t seed, int count, const std::string& what, double levelTolerance)
+{
+	Random rng(seed);
+	int failed = 0;
+	double worstLevel = 0.0, worstNormal = 0.0;
+	for (int k = 0; k < count; ++k)
+	{
+		const Pair p = RandomPair(rng, 2.0, 20.0, k % 3 == 0 ? 30.0 : 4.0, false);
+		const LevelResult3 r = solve(p);
+		if (!r.Ok())
+		{
+			CHECK_MESSAGE(std::string(r.failure).size() > 0, what << " pair " << k << ": failed without a reason");
+			++failed;
+			continue;
+		}
+		long double residual = 1.0L;
+		const auto [level, normal] = ReferenceErrors(p, r, residual);
+		REQUIRE(residual < 1e-12L);
+		CHECK_MESSAGE(level <= levelTolerance, what << " pair " << k << ": level off by " << level);
+		CHECK_MESSAGE(normal <= 1e-6, what << " pair " << k << ": normal off by " << normal << " rad");
+		worstLevel = std::max(worstLevel, level);
+		worstNormal = std::max(worstNormal, normal);
+	}
+	MESSAGE(what << ": " << failed << " of " << count << " reported failed; worst level " << worstLevel << ", normal "
+	             << worstNormal << " rad");
+	return failed;
+}
+} // namespace
+
+TEST_CASE("3D contact: Newton's converged exit is a solution (a loose step tolerance is polished on)")
+{
+	// A step tolerance of a tenth of the size stops Newton after its first short full step, far
+	// from the answer (levels off by up to 2e-2 where the exit did not test the conditions); the
+	// conditions tested at that exit send it on to a solution, to the stress test's standard.
+	SolverOptions loose;
+	loose.stepTolerance = 0.1;
+	const int failed = CheckConvergedAreSolutions(
+	    [&](const Pair& p) { return SolveCommonLevelNewton(*p.a, p.pa, *p.b, p.pb, loose); }, 61, 200, "newton, step tolerance 0.1", 1e-9);
+	CHECK(failed <= 4);
+}
+
+TEST_CASE("3D contact: the min-max stopped early by a small cap is polished or reported, never passed off")
+{
+	// maxIterations = 2: eight root steps on the multiplier and a two-step polish; maxIterations =
+	// 4: sixteen and four. What stops short fails with a reason, and the chain moves on. Answers
+	// to 1e-12 in the level, the standard of the other converged answers here (a comparison of
+	// the levels to 1e-10 alone passed one at 1e-11 with cap 2).
+	for (const int cap : {2, 4})
+	{
+		SolverOptions small;
+		small.maxIterations = cap;
+		const std::string what = "min-max, cap " + std::to_string(cap);
+		const int failed = CheckConvergedAreSolutions(
+		    [&](const Pair& p) { return SolveCommonLevelMinMax(*p.a, p.pa, *p.b, p.pb, small); }, 71, 120, what, 1e-12);
+		if (cap == 2)
+			CHECK(failed > 0); // the cap does stop some short: the test sees the check at work
+		CheckConvergedAreSolutions([&](const Pair& p) { return SolveCommonLevel(*p.a, p.pa, *p.b, p.pb, MethodChoice::automatic, small); },
+		                           71, 120, "chain, cap " + std::to_string(cap), 1e-12);
+	}
+}

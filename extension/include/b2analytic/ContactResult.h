@@ -109,7 +109,7 @@ struct WarmStart
 /// Tuning of the solvers; the defaults suit every use in the library.
 struct SolverOptions
 {
-	int maxIterations = 60;        ///< Newton iteration cap
+	int maxIterations = 60;        ///< Newton iteration cap (the 3D min-max: 4 root steps each, at most 200)
 	double stepTolerance = 1e-13;  ///< Newton stops when a full step moves the point less than this times the pair's size
 	int gridSamples = 256;         ///< surface samples for the grid method (≥ 8)
 	int gridCandidates = 4;        ///< local minima of the samples refined by the grid method

@@ -261,7 +261,15 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 		const double moved = alpha * std::max({std::fabs(delta[0]), std::fabs(delta[1]), std::fabs(delta[2])});
 		std::swap(current, trial);
 		const bool full = limit == 1.0 && alpha == 1.0 && !shifted;
-		if ((full && moved <= options.stepTolerance) || current->relative < 1e-15)
+		// Converged only where the conditions hold at the new point (its gauges are evaluated, so
+		// the test is a comparison); else Newton goes on from it, within the cap. (The rounding-
+		// floor exits above have the point's own rounding as their standard: near-tangent plates of
+		// aspect 100 stop there with levels 1e-9 apart, which ConditionsHold3's cap of 1e-9/q in the
+		// gauges would refuse, sending warm starts to a cold solve.)
+		// A relative residual under 1e-12 holds the levels to 2e-12 and the normals to 3e-12 rad,
+		// within the test's tolerances: the common case is one comparison.
+		if (((full && moved <= options.stepTolerance) || current->relative < 1e-15) &&
+		    (current->relative < 1e-12 || ConditionsHold3(f, current->xi, current->A, current->B)))
 			break;
 		if (it == cap)
 		{
@@ -288,7 +296,11 @@ LevelResult3 RunNewton3(const PairFrame3& f, Vec3 xi, double nu, const SolverOpt
 
 bool ConditionsHold3(const PairFrame3& f, Vec3 xi)
 {
-	const GaugeValue3 A = f.Eval(f.a, xi, true), B = f.Eval(f.b, xi, true);
+	return ConditionsHold3(f, xi, f.Eval(f.a, xi, true), f.Eval(f.b, xi, true));
+}
+
+bool ConditionsHold3(const PairFrame3& f, Vec3 xi, const GaugeValue3& A, const GaugeValue3& B)
+{
 	const double eps = std::numeric_limits<double>::epsilon();
 	const double la = Length(A.grad), lb = Length(B.grad), mean = 0.5 * (A.psi + B.psi);
 	if (!(A.finite && B.finite && la > 0.0 && lb > 0.0 && mean > 0.0))

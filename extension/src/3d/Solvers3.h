@@ -20,6 +20,10 @@ LevelResult3 RunNewton3(const PairFrame3& frame, Vec3 xi, double nu, const Solve
 /// double precision does not determine them (centres within 1e-8 of the size of each other).
 bool ConditionsHold3(const PairFrame3& frame, Vec3 xi);
 
+/// ConditionsHold3 with both gauges already evaluated at ξ, Hessians included (a solver's own
+/// last point: the test is then a comparison, not an evaluation).
+bool ConditionsHold3(const PairFrame3& frame, Vec3 xi, const GaugeValue3& a, const GaugeValue3& b);
+
 /// The point between the centres where ψA = ψB, and μ balancing the gradients there; false
 /// when the centres coincide.
 bool GeometricStart3(const PairFrame3& frame, Vec3& xi, double& mu);
