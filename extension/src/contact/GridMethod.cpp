@@ -273,6 +273,20 @@ void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double
 	}
 }
 
+// Beside a kink at `point` (B's corner, or the valley where a corner ray of A crosses B), a
+// smooth minimum may lie lower within the bracket [pl, ph]: Newton from each neighbour, held to
+// its side of the kink, and the lower answer kept.
+void NewtonBesideKink(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double reach, double& value, Vec2& point)
+{
+	const Vec2 kink = point;
+	double v;
+	Vec2 x;
+	if (RefineNewton(walk, pl, kink, pl, value, reach, v, x) && v < value)
+		value = v, point = x;
+	if (RefineNewton(walk, kink, ph, ph, value, reach, v, x) && v < value)
+		value = v, point = x;
+}
+
 // Refine sample k, a local minimum of the samples, to the minimum of λA along B's curve between
 // its neighbours: Newton from the sample on smooth stretches; at B's corners the corner or a
 // smooth minimum beside it; where A's corner ray crosses the bracket, the crossing (Newton has
@@ -292,13 +306,7 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 		// B's corner: its curve has no tangent there, so Newton cannot start on it. The corner
 		// is the minimum unless a smooth minimum lies beside it, lower, within the bracket (an
 		// edge of a diamond touched next to its vertex); Newton from each neighbour looks there.
-		const Vec2 corner = point;
-		double v;
-		Vec2 x;
-		if (RefineNewton(walk, pl, corner, pl, value, reach, v, x) && v < value)
-			value = v, point = x;
-		if (RefineNewton(walk, corner, ph, ph, value, reach, v, x) && v < value)
-			value = v, point = x;
+		NewtonBesideKink(walk, pl, ph, reach, value, point);
 		return;
 	}
 	// Newton starts at the vertex of the parabola through the three samples' values, on the
@@ -363,13 +371,7 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 		// held to its side of the crossing, as beside B's corners. Where the valley is the
 		// minimum, A's level is concave on both sides of it (|s|^{2/3}) and each stops at its
 		// first curvature test.
-		const Vec2 valley = point;
-		double v;
-		Vec2 x;
-		if (RefineNewton(walk, pl, valley, pl, value, reach, v, x) && v < value)
-			value = v, point = x;
-		if (RefineNewton(walk, valley, ph, ph, value, reach, v, x) && v < value)
-			value = v, point = x;
+		NewtonBesideKink(walk, pl, ph, reach, value, point);
 		return;
 	}
 	double theta = sampleTheta;
