@@ -462,8 +462,6 @@ struct Stress
 	// motions (as the Box2D adapter keeps a contact's warm start from step to step).
 	void BuiltPair(Category cat, const std::shared_ptr<SuperellipsoidShape>& a, const std::shared_ptr<SuperellipsoidShape>& b)
 	{
-		Tally& t = tallies[int(cat)];
-		const Tally before = t;
 		double C = 1.0;
 		if (cat == Category::built || cat == Category::identical)
 			C = rng.LogUniform(1e-3, 1e3);
@@ -472,42 +470,38 @@ struct Stress
 		else
 			C = rng.LogUniform(1e-6, 1e-2);
 		BuildParams params = DrawBuild(rng, *a, C);
+		// The cold solve records the warm start the motions below begin from.
+		WarmStart3 warm;
 		const Built p = Build(a, b, params);
-		Headline& h = CentreInside(*p.a, p.pa, *p.b, p.pb) ? beyondRange : inRange;
+		if (!SolveBuilt(tallies[int(cat)], inRange, beyondRange, p, warm))
+			return;
+		const double size = 0.5 * (p.a->BoundingRadius() + p.b->BoundingRadius());
+		for (int step = 0; step < kWarmSteps; ++step)
+		{
+			const double delta = warmRng.LogUniform(1e-6, 1e-2);
+			params = Perturb(warmRng, params, size, delta, cat == Category::nearTangent ? 1e-10 : delta);
+			if (!SolveBuilt(warmTallies[int(cat)], warmInRange, warmBeyondRange, Build(a, b, params), warm))
+				return;
+		}
+	}
+
+	// A built pair solved (from `warm` where it is valid; the answer recorded in it) and judged
+	// against its known answer, into the category's tally and the headline its centres choose.
+	static bool SolveBuilt(Tally& t, Headline& range, Headline& beyond, const Built& p, WarmStart3& warm)
+	{
+		Headline& h = CentreInside(*p.a, p.pa, *p.b, p.pb) ? beyond : range;
+		const Tally before = t;
 		ContactResult3 c;
-		const bool solved = Solve(t, *p.a, p.pa, *p.b, p.pb, c);
+		const bool solved = Solve(t, *p.a, p.pa, *p.b, p.pb, c, &warm);
 		if (solved && WrongVerdict(p, c))
 		{
 			++t.wrongVerdict;
 			h.wrongVerdictCase = CaseWithAnswer(p, c);
 		}
 		h.CountOutcome(before, t);
-		if (!solved)
-			return;
-		CheckBuilt(t, h, p, c);
-		WarmStart3 warm;
-		ComputeContact(*p.a, p.pa, *p.b, p.pb, MethodChoice::automatic, {}, &warm);
-		const double size = 0.5 * (p.a->BoundingRadius() + p.b->BoundingRadius());
-		Tally& tw = warmTallies[int(cat)];
-		for (int step = 0; step < kWarmSteps; ++step)
-		{
-			const double delta = warmRng.LogUniform(1e-6, 1e-2);
-			params = Perturb(warmRng, params, size, delta, cat == Category::nearTangent ? 1e-10 : delta);
-			const Built q = Build(a, b, params);
-			Headline& hw = CentreInside(*q.a, q.pa, *q.b, q.pb) ? warmBeyondRange : warmInRange;
-			const Tally warmBefore = tw;
-			ContactResult3 cw;
-			const bool ok = Solve(tw, *q.a, q.pa, *q.b, q.pb, cw, &warm);
-			if (ok && WrongVerdict(q, cw))
-			{
-				++tw.wrongVerdict;
-				hw.wrongVerdictCase = CaseWithAnswer(q, cw);
-			}
-			hw.CountOutcome(warmBefore, tw);
-			if (!ok)
-				return;
-			CheckBuilt(tw, hw, q, cw);
-		}
+		if (solved)
+			CheckBuilt(t, h, p, c);
+		return solved;
 	}
 };
 
