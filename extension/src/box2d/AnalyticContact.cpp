@@ -43,13 +43,6 @@ const bool g_installed = AnalyticContact::Install();
 Vec2 V(const b2Vec2& v) { return Vec2(v.x, v.y); }
 b2Vec2 F(Vec2 v) { return b2Vec2(float(v.x), float(v.y)); }
 
-// kContactHoldGap (AnalyticFixture.h): the point kept, with its positive separation, is one
-// Box2D's velocity solver holds at no approach and its position solver leaves alone. In a
-// settled pile of 300 superellipses n = 4 a grazing contact crossed zero separation by 1e-5 m
-// every step or two, and b2Contact::Update's wake-ups zeroed its bodies' sleep timers with
-// every body below the sleep tolerances: the pile slept seconds after it had stopped.
-constexpr double kHoldGap = kContactHoldGap;
-
 // Whether the axis n (unit, from A towards B) separates the particles: B's lowest point along n
 // lies above A's highest, (cB − cA)·n − h_A(n) − h_B(−n) > 0 with h the support values in the
 // body frames. The shapes' bounds on h decide most pairs (touching ones by the lower bounds,
@@ -281,7 +274,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		// overlap for many pairs whose particles are apart (elongated ones especially).
 		const Shape& shapeA = *pa.shape;
 		const Shape& shapeB = *pb.shape;
-		const double reach = pa.radius + pb.radius + (IsTouching() ? kHoldGap : 0.0);
+		const double reach = pa.radius + pb.radius + (IsTouching() ? kContactHoldGap : 0.0);
 		const Vec2 between = poseB.p - poseA.p;
 		if (LengthSquared(between) > reach * reach)
 		{
@@ -306,7 +299,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 				return;
 		}
 		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, m_solver ? *m_solver : SolverOptions{}, &m_warm);
-		m_wasTouching = c.Ok() && c.separation <= kHoldGap;
+		m_wasTouching = c.Ok() && c.separation <= kContactHoldGap;
 		if (c.Ok())
 		{
 			m_lastNormal = c.normal;
@@ -408,11 +401,13 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	// were larger by the gap (faces and their ends as at touching, measured from the lifted
 	// level), and Box2D, which measures separations from the points, sees the true, positive
 	// gap: a face lifted by a fraction of a millimetre keeps its two points, as it would touching.
+	// Box2D's velocity solver holds such a point at no approach and its position solver leaves
+	// it alone (kContactHoldGap, AnalyticFixture.h, says why the contact is held).
 	double held = 0.0;
 	if (IsTouching())
 	{
 		const double gap = Dot(oriented.pointB - oriented.pointA, oriented.normal) - radii;
-		if (gap > 0.0 && gap <= kHoldGap)
+		if (gap > 0.0 && gap <= kContactHoldGap)
 			held = gap + 1e-12 * (1.0 + radii);
 	}
 	const ContactManifold m = fromB ? BuildContactManifold(oriented, sideB, sideA, m_patchTolerance, m_patchMinWidth, radii + held, &m_patch)
