@@ -55,6 +55,10 @@ struct ManifoldCache
 	double offFaceB = std::numeric_limits<double>::quiet_NaN(); ///< the same for B
 	bool validA = false;               ///< faceA holds a face
 	bool validB = false;               ///< faceB holds a face
+	/// A's contact point lay on faceA at the last step: it stays on it until it lies farther than
+	/// twice the tolerance from the face's tangent plane (hysteresis at the face's ends).
+	bool onA = false;
+	bool onB = false; ///< the same for B
 	/// Points of a non-convex pair's last manifold (lobes on a face, or two parts of the overlap),
 	/// whose ids the next manifold's points take by nearness: partCount of them.
 	signed char partCount = 0;

@@ -182,13 +182,29 @@ bool OnFace(const double face[3], Vec2 x)
 	return at >= TurnRemainder(face[1] - face[0]) && at <= TurnRemainder(face[2] - face[0]);
 }
 
+// Whether the body point x lies within `gap` of the tangent plane at the face's flattest point
+// (on its inner side): a contact point that was on the face at the last step stays on it while
+// it is within twice the tolerance, instead of leaving as soon as it passes an end. Two offset
+// blocks whose faces overlap near both faces' ends otherwise went from two points to one and
+// back every few steps (the normal turning 0.025 rad, the second point's impulse lost), and kept
+// their pile awake.
+bool NearFacePlane(const Shape& shape, const double face[3], Vec2 x, double gap)
+{
+	const Vec2 c = shape.SurfacePoint(face[0]);
+	const Vec2 n = Normalize(shape.Gradient(c));
+	const double drop = Dot(c - x, n);
+	return drop >= -gap && drop <= gap;
+}
+
 // The face of an analytic convex side at its contact point p (world) with outward direction d
 // (world). Smooth shapes: the face through p, kept in `face` (angles) while the contact stays
 // on it. Shapes with corners or infinite curvature on their axes (superellipse exponents below 2)
 // have no curvature to tell faces by: their face is the arc within tol of their extreme along d,
 // with d as its normal.
-Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace)
+Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace, bool& wasOn)
 {
+	const bool on = wasOn;
+	wasOn = false;
 	Face out;
 	const Shape& shape = *side.shape;
 	if (!shape.IsSmoothConvex())
@@ -208,7 +224,7 @@ Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, doub
 	if (!CanHaveFaces(shape))
 		return out;
 	const Vec2 x = ToBody(side.pose, p);
-	if (!(cached && OnFace(face, x)))
+	if (!(cached && (OnFace(face, x) || (on && NearFacePlane(shape, face, x, 2.0 * tol)))))
 	{
 		// Off the face kept (or none kept): a contact point that stays near where none was found
 		// last time is taken to stay off faces, and a search runs only once it has moved on by
@@ -229,6 +245,7 @@ Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, doub
 		}
 	}
 	const Vec2 c = shape.SurfacePoint(face[0]);
+	wasOn = true;
 	out.valid = true;
 	out.normal = Rotate(side.pose.q, Normalize(shape.Gradient(c)));
 	out.centre = ToWorld(side.pose, c);
@@ -267,12 +284,12 @@ Face PolygonSideFace(const Vec2* w, int count, Vec2 p, Vec2 d)
 	return out;
 }
 
-Face SideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace)
+Face SideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace, bool& wasOn)
 {
 	if (side.point)
 		return {};
 	if (side.shape)
-		return side.shape->IsConvex() ? AnalyticSideFace(side, p, d, tol, face, cached, offFace) : Face{};
+		return side.shape->IsConvex() ? AnalyticSideFace(side, p, d, tol, face, cached, offFace, wasOn) : Face{};
 	if (side.vertices && side.count >= 2)
 		return PolygonSideFace(side.vertices, side.count, p, d);
 	return {};
@@ -582,6 +599,9 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 	ManifoldCache scratch;
 	if (!cache)
 		cache = &scratch;
+	// Each side's face flag holds for the next step only where this step reaches its face test.
+	bool onA = cache->onA, onB = cache->onB;
+	cache->onA = cache->onB = false;
 	ContactManifold m;
 	m.normal = c.normal;
 	m.pointA = c.pointA;
@@ -591,7 +611,8 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 	m.count = 1;
 	m.points[0] = {c.pointB, sep0, 0};
 	const bool twoParts = a.shape && b.shape && !a.point && !b.point && !(a.shape->IsConvex() && b.shape->IsConvex());
-	const Face fa = SideFace(a, c.pointA, c.normal, tol, cache->faceA, cache->validA, cache->offFaceA);
+	const Face fa = SideFace(a, c.pointA, c.normal, tol, cache->faceA, cache->validA, cache->offFaceA, onA);
+	cache->onA = onA;
 	if (!fa.valid)
 	{
 		if (!twoParts)
@@ -610,7 +631,8 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 		MatchPartIds(out, b, *cache);
 		return out;
 	}
-	const Face fb = SideFace(b, c.pointB, -c.normal, tol, cache->faceB, cache->validB, cache->offFaceB);
+	const Face fb = SideFace(b, c.pointB, -c.normal, tol, cache->faceB, cache->validB, cache->offFaceB, onB);
+	cache->onB = onB;
 	if (!fb.valid)
 		return m;
 	// A's face is the reference: its normal, and its plane through its centre. The faces'
