@@ -155,6 +155,48 @@ TEST_CASE("BuildContactManifold: blocks offset by half their width, as in a pyra
 	CHECK(one.normal.x == c.normal.x);
 }
 
+TEST_CASE("BuildContactManifold: a contact point that leaves its face by less than the tolerance keeps the two points")
+{
+	// Two blocks n = 4, 1 × 0.6 (the game bucket's), B on A's top face tilted by 0.024 rad
+	// (its left end lower) and sunk by 5 mm, sliding right by 0.5 mm a step until the faces
+	// overlap by 1.5 cm. From an overlap of about 4 cm the contact point lies past the end of B's
+	// face, and a manifold built afresh at each step falls to one point; one built with the last
+	// step's cache keeps B's face while the contact point lies within twice the tolerance of its
+	// plane, and so its two points: B's face's left end and B's surface above A's face's right end.
+	const ShapePtr s = MakeSuperellipse(0.5, 0.3, 4.0, 4.0);
+	const Pose pa(Vec2(0.0, 0.0), 0.0);
+	const LD half = FaceHalfWidth(0.5L, 0.3L, 4.0L);
+	const double bA = 0.3; // A's face plane y = bA (its flattest point is the axis point)
+	ManifoldCache cache;
+	int fresh = 0, steps = 0;
+	for (double dx = 0.30; dx <= 0.405; dx += 0.0005, ++steps)
+	{
+		CAPTURE(dx);
+		const Pose pb(Vec2(dx, 0.6 - 0.005), 0.024);
+		const ContactResult c = ComputeContact(*s, pa, *s, pb);
+		REQUIRE(c.Ok());
+		const ManifoldSide sa{s.get(), pa}, sb{s.get(), pb};
+		fresh += BuildContactManifold(c, sa, sb, kTol, 0.0).count == 2;
+		const ContactManifold m = BuildContactManifold(c, sa, sb, kTol, 0.0, 0.0, &cache);
+		REQUIRE(m.count == 2);
+		CHECK(std::fabs(m.normal.x) < 1e-12);
+		// (Ids follow the tangent Perp(n), which runs towards −x here.)
+		const Vec2 left = BottomPoint(pb, 0.5L, 0.3L, 4.0L, -half);
+		CHECK(std::fabs(m.points[0].pointB.x - double(half)) < 1e-9);
+		CHECK(Distance(m.points[1].pointB, left) < 1e-9);
+		CHECK(m.points[0].id == 0);
+		CHECK(m.points[1].id == 1);
+		for (int k = 0; k < 2; ++k)
+		{
+			CHECK(m.points[k].separation == doctest::Approx(m.points[k].pointB.y - bA).epsilon(1e-9));
+			CHECK(m.points[k].separation < 0.0);
+		}
+	}
+	// Afresh, two points up to an overlap of about 4 cm, then one over the last 2.8 cm of the slide.
+	CHECK(fresh > steps / 2);
+	CHECK(steps - fresh >= 50);
+}
+
 TEST_CASE("BuildContactManifold: a tilted face stands on its lower end; one barely touching on the contact point")
 {
 	const ShapePtr a = MakeSuperellipse(3.0, 1.0, 4.0, 4.0);

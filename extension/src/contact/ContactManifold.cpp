@@ -182,12 +182,13 @@ bool OnFace(const double face[3], Vec2 x)
 	return at >= TurnRemainder(face[1] - face[0]) && at <= TurnRemainder(face[2] - face[0]);
 }
 
-// Whether the body point x lies within `gap` of the tangent plane at the face's flattest point
-// (on its inner side): a contact point that was on the face at the last step stays on it while
-// it is within twice the tolerance, instead of leaving as soon as it passes an end. Two offset
-// blocks whose faces overlap near both faces' ends otherwise went from two points to one and
-// back every few steps (the normal turning 0.025 rad, the second point's impulse lost), and kept
-// their pile awake.
+// Whether the body point x lies within `gap` of the tangent plane at the face's flattest point:
+// a contact point that was on the face at the last step stays on it while it lies within twice
+// the tolerance, instead of leaving as soon as it passes an end (hysteresis). Two offset blocks
+// whose faces overlap near both faces' ends otherwise go from two points to one and back every
+// few steps, the normal turning and the second point's impulse lost each time, and keep their
+// pile awake (docs/benchmarks.md, "Sleeping piles"). The face's ends, and so the manifold's
+// points, stay those at the tolerance.
 bool NearFacePlane(const Shape& shape, const double face[3], Vec2 x, double gap)
 {
 	const Vec2 c = shape.SurfacePoint(face[0]);
@@ -611,6 +612,11 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 	m.count = 1;
 	m.points[0] = {c.pointB, sep0, 0};
 	const bool twoParts = a.shape && b.shape && !a.point && !b.point && !(a.shape->IsConvex() && b.shape->IsConvex());
+	// The face hysteresis (NearFacePlane) is for two faces' overlap. Where B is not convex, A's face
+	// decides between B's lobes on it and the parts of the overlap, and a contact point past the
+	// face's end belongs to the parts (docs/benchmarks.md, "Sleeping piles").
+	if (b.shape && !b.shape->IsConvex() && !b.point)
+		onA = false;
 	const Face fa = SideFace(a, c.pointA, c.normal, tol, cache->faceA, cache->validA, cache->offFaceA, onA);
 	cache->onA = onA;
 	if (!fa.valid)
