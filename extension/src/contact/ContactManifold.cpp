@@ -428,8 +428,9 @@ int LobesOnFace(const Face& fa, const ManifoldSide& b, double tol, double radii,
 // the smaller particle (overlaps made, not met, where the parts' normals say little), the
 // contact's point alone.
 ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, const ManifoldSide& b, double radii, double full,
-                                const ContactManifold& single, const ManifoldCache& cache)
+                                const ContactManifold& single, const ManifoldCache& cache, Vec2 places[2])
 {
+	places[0] = single.points[0].pointB;
 	constexpr int kMax = 4;
 	OverlapPart parts[kMax + 1]; // the contact's own part first
 	const double apart = 0.1 * std::min(a.shape->BoundingRadius(), b.shape->BoundingRadius());
@@ -527,6 +528,7 @@ ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, c
 		// measures every point of a manifold from one plane through pointA).
 		const Vec2 q = points[j] + (sep - (Dot(points[j] - m.pointA, n) - radii)) * n;
 		m.points[k] = {q, sep, k};
+		places[k] = points[j];
 	}
 	m.count = 2;
 	return m;
@@ -539,11 +541,14 @@ ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, c
 // an id none of them had, so that Box2D starts it without the impulse of a point elsewhere.
 // (In a pile of hearts the second lobe or part comes and goes, and by order alone the one that
 // stays swapped ids with it: the warm start then pushed where the other had been.)
-void MatchPartIds(ContactManifold& m, const ManifoldSide& b, ManifoldCache& cache)
+// `places` are the points' places on B's surface (world): a part's manifold point is moved
+// along the common normal, as far as 0.3 m where the overlap's parts lie along a curve, and
+// TwoPartManifold finds the last step's parts again by their places on B, not by those points.
+void MatchPartIds(ContactManifold& m, const Vec2 places[2], const ManifoldSide& b, ManifoldCache& cache)
 {
 	Vec2 here[2];
 	for (int k = 0; k < m.count; ++k)
-		here[k] = ToBody(b.pose, m.points[k].pointB);
+		here[k] = ToBody(b.pose, places[k]);
 	const int before = cache.partCount;
 	const double far = 0.1 * b.shape->BoundingRadius();
 	auto old = [&](int j) { return Vec2(cache.partB[j][0], cache.partB[j][1]); };
@@ -623,8 +628,9 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 	{
 		if (!twoParts)
 			return m;
-		ContactManifold parts = TwoPartManifold(c, a, b, radii, 2.0 * tol, m, *cache);
-		MatchPartIds(parts, b, *cache);
+		Vec2 places[2];
+		ContactManifold parts = TwoPartManifold(c, a, b, radii, 2.0 * tol, m, *cache, places);
+		MatchPartIds(parts, places, b, *cache);
 		return parts;
 	}
 	if (b.shape && !b.shape->IsConvex() && !b.point)
@@ -633,8 +639,24 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 		lobes.normal = fa.normal;
 		lobes.pointA = fa.centre;
 		lobes.count = LobesOnFace(fa, b, tol, radii, lobes.points);
+		if (lobes.count < 2 && twoParts)
+		{
+			// One lobe on A's face, and B may overlap A elsewhere too (past the face's end, at a
+			// corner): the parts of the overlap where there are two, as where the contact point lies
+			// at that other part. Which of the two the scaling-factor contact finds can change from
+			// step to step where they are about as deep, and the manifold then went from one lobe
+			// to two parts and back, the normal turning by half a radian every step.
+			Vec2 places[2];
+			ContactManifold parts = TwoPartManifold(c, a, b, radii, 2.0 * tol, m, *cache, places);
+			if (parts.count == 2)
+			{
+				MatchPartIds(parts, places, b, *cache);
+				return parts;
+			}
+		}
 		ContactManifold& out = lobes.count > 0 ? lobes : m;
-		MatchPartIds(out, b, *cache);
+		const Vec2 places[2] = {out.points[0].pointB, out.points[1].pointB};
+		MatchPartIds(out, places, b, *cache);
 		return out;
 	}
 	const Face fb = SideFace(b, c.pointB, -c.normal, tol, cache->faceB, cache->validB, cache->offFaceB, onB);
