@@ -48,6 +48,17 @@ Vec2 BottomPoint(const Pose& pose, LD a, LD b, LD n, LD x)
 	return Vec2(double(pose.p.x + c * x - s * y), double(pose.p.y + s * x + c * y));
 }
 
+// The pose p moved by up to `amp` (m and rad) at a test's step `step`: a fixed sequence of
+// jitters in [−1, 1] times amp, for its position's two coordinates and its angle.
+Pose Jittered(const Pose& p, int step, double amp)
+{
+	auto jitter = [](int k) {
+		const double x = std::sin(k * 12.9898) * 43758.5453;
+		return 2.0 * (x - std::floor(x)) - 1.0;
+	};
+	return Pose(p.p + amp * Vec2(jitter(3 * step + 1), jitter(3 * step + 2)), p.q.Angle() + amp * jitter(3 * step + 3));
+}
+
 // The manifold's points are `ends` (world, in either order), each with its height above A's face
 // plane y = bA as its separation (A unrotated at the origin; the normal is +y).
 void CheckFaceEnds(const ContactManifold& m, const std::vector<Vec2>& ends, LD bA)
@@ -515,11 +526,6 @@ TEST_CASE("BuildContactManifold: two hearts overlapping in three parts keep one 
 	pb.q.s = 0.97138399049626734;
 	OverlapPart parts[4];
 	REQUIRE(OverlapParts(*h, pa, *h, pb, true, parts, 4) == 3);
-	// A fixed sequence of jitters in [−1, 1].
-	auto jitter = [](int k) {
-		const double x = std::sin(k * 12.9898) * 43758.5453;
-		return 2.0 * (x - std::floor(x)) - 1.0;
-	};
 	WarmStart warm;
 	ManifoldCache cache;
 	Vec2 last, lastFresh;
@@ -527,9 +533,7 @@ TEST_CASE("BuildContactManifold: two hearts overlapping in three parts keep one 
 	for (int step = 0; step < 60; ++step)
 	{
 		CAPTURE(step);
-		Pose q = pb;
-		q.p = pb.p + 1e-3 * Vec2(jitter(3 * step + 1), jitter(3 * step + 2));
-		q.q = Rot(pb.q.Angle() + 1e-3 * jitter(3 * step + 3));
+		const Pose q = Jittered(pb, step, 1e-3);
 		const ContactResult c = ComputeContact(*h, pa, *h, q, MethodChoice::automatic, SolverOptions{}, &warm);
 		REQUIRE(c.Ok());
 		const ManifoldSide sa{h.get(), pa}, sb{h.get(), q};
@@ -563,10 +567,6 @@ TEST_CASE("BuildContactManifold: a heart on a block's face and corner keeps the 
 	pb.p = Vec2(-1.0003961324691772, 2.0721228122711182);
 	pb.q.c = -0.99995133055933294;
 	pb.q.s = -0.0098659268505010469;
-	auto jitter = [](int k) {
-		const double x = std::sin(k * 12.9898) * 43758.5453;
-		return 2.0 * (x - std::floor(x)) - 1.0;
-	};
 	WarmStart warm;
 	ManifoldCache cache;
 	Vec2 last;
@@ -574,9 +574,7 @@ TEST_CASE("BuildContactManifold: a heart on a block's face and corner keeps the 
 	for (int step = 0; step < 60; ++step)
 	{
 		CAPTURE(step);
-		Pose q = pb;
-		q.p = pb.p + 1e-3 * Vec2(jitter(3 * step + 1), jitter(3 * step + 2));
-		q.q = Rot(pb.q.Angle() + 1e-3 * jitter(3 * step + 3));
+		const Pose q = Jittered(pb, step, 1e-3);
 		const ContactResult c = ComputeContact(*h, pa, *block, q, MethodChoice::automatic, SolverOptions{}, &warm);
 		REQUIRE(c.Ok());
 		const ContactResult fromBlock = FlipContact(c);
