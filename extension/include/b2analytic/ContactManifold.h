@@ -63,7 +63,9 @@ struct ManifoldCache
 	/// whose ids the next manifold's points take by nearness: partCount of them.
 	signed char partCount = 0;
 	signed char partId[2] = {0, 1}; ///< their ids
-	float partB[2][2] = {{0.0f, 0.0f}, {0.0f, 0.0f}}; ///< their places on B (B's body frame)
+	/// Their places on B's surface (B's body frame; a part's manifold point lies along the normal
+	/// from its place, as far as the parts' plane is from it).
+	float partB[2][2] = {{0.0f, 0.0f}, {0.0f, 0.0f}};
 };
 
 /// Build the manifold of a contact, as Box2D builds its polygons': two particles that touch face
@@ -71,7 +73,9 @@ struct ManifoldCache
 /// a pyramid or a wall) get two points with one normal, or stacks rock, creep and sag. A face is
 /// a polygon's edge, or the arc of an analytic particle around a point whose radius of curvature
 /// exceeds ten bounding radii (a blocky superellipse's side; not a circle, nor an ellipse of
-/// aspect below ten), within `patchTolerance` of the tangent there: it belongs to the body. Where
+/// aspect below ten), within `patchTolerance` of the tangent there: it belongs to the body (with
+/// `cache`, a contact point that lay on its face at the last step stays on it while it lies
+/// within twice the tolerance of the face's tangent plane, where both sides are convex). Where
 /// both contact points lie on faces, A's face is the reference: the normal is its normal, and
 /// where the two faces' extents along it overlap by more than max(2·patchTolerance,
 /// minPatchWidth), the points are B's surface at the overlap's two ends (ids 0 and 1), those at
