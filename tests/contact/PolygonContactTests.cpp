@@ -29,23 +29,25 @@ double SegmentDistance(Vec2 p, Vec2 u, Vec2 v)
 	return Length(p - (u + t * e));
 }
 
-// Largest gap over directions for an ellipse (a, b) at pose pa against world vertices w, by brute force.
-double EllipseGapByScan(double a, double b, const Pose& pa, const std::vector<Vec2>& w, double& angle)
+// Largest gap over directions between a shape, given by its world support value along a unit
+// direction, and world vertices w, by brute force: `samples` angles, then golden-section search
+// between the best one's neighbours. Never exceeds the true maximum; `angle` is the maximiser.
+template <typename SupportValue>
+double GapByScan(const SupportValue& support, const std::vector<Vec2>& w, int samples, double& angle)
 {
 	auto gap = [&](double t) {
 		const Vec2 n(std::cos(t), std::sin(t));
 		double lowest = std::numeric_limits<double>::infinity();
 		for (const Vec2& v : w)
 			lowest = std::min(lowest, Dot(v, n));
-		const Vec2 nb = InvRotate(pa.q, n);
-		return lowest - Dot(pa.p, n) - std::hypot(a * nb.x, b * nb.y);
+		return lowest - support(n);
 	};
-	const int samples = 4096;
+	std::vector<double> g(static_cast<size_t>(samples));
+	for (int k = 0; k < samples; ++k)
+		g[size_t(k)] = gap(2.0 * kPi * k / samples);
 	int best = 0;
 	for (int k = 1; k < samples; ++k)
-		if (gap(2.0 * kPi * k / samples) > gap(2.0 * kPi * best / samples))
-			best = k;
-	// Golden-section search for the maximiser, then its value.
+		best = g[size_t(k)] > g[size_t(best)] ? k : best;
 	double lo = 2.0 * kPi * (best - 1) / samples, hi = 2.0 * kPi * (best + 1) / samples;
 	const double r = 0.6180339887498949;
 	double x1 = hi - r * (hi - lo), x2 = lo + r * (hi - lo), g1 = gap(x1), g2 = gap(x2);
@@ -56,6 +58,34 @@ double EllipseGapByScan(double a, double b, const Pose& pa, const std::vector<Ve
 	}
 	angle = 0.5 * (lo + hi);
 	return std::max(g1, g2);
+}
+
+// A 2 x 1 box and a long segment, alternately, turned by a small random angle about the origin,
+// and a random place along the top face: the face-contact scans below share them.
+struct FaceCase
+{
+	const Vec2* v = nullptr;
+	int count = 0;
+	Pose pb;
+	double along = 0.0;  // where along the top face the particle is put
+	double top = 0.0;    // the top face's height in the polygon's frame
+	std::vector<Vec2> w; // the vertices in the world
+};
+
+FaceCase MakeFaceCase(int i, Random& rng, double alongRange)
+{
+	static const Vec2 box[] = {{-1.0, -0.5}, {1.0, -0.5}, {1.0, 0.5}, {-1.0, 0.5}};
+	static const Vec2 segment[] = {{-2.0, 0.0}, {2.0, 0.0}};
+	FaceCase f;
+	const bool isBox = i % 2 == 0;
+	f.v = isBox ? box : segment;
+	f.count = isBox ? 4 : 2;
+	f.pb = Pose(Vec2(), rng.Uniform(-0.3, 0.3));
+	f.along = rng.Uniform(-alongRange, alongRange);
+	f.top = isBox ? 0.5 : 0.0;
+	for (int j = 0; j < f.count; ++j)
+		f.w.push_back(ToWorld(f.pb, f.v[j]));
+	return f;
 }
 } // namespace
 
@@ -103,32 +133,27 @@ TEST_CASE("polygon contact: an ellipse against boxes and segments matches the br
 {
 	const double a = 0.7, b = 0.25;
 	const auto ellipse = MakeEllipse(a, b);
-	const Vec2 box[] = {{-1.0, -0.5}, {1.0, -0.5}, {1.0, 0.5}, {-1.0, 0.5}};
-	const Vec2 segment[] = {{-2.0, 0.0}, {2.0, 0.0}};
 	Random rng(62);
 	int resting = 0;
 	for (int i = 0; i < 300; ++i)
 	{
-		const bool isBox = i % 2 == 0;
-		const Vec2* v = isBox ? box : segment;
-		const int count = isBox ? 4 : 2;
-		const Pose pb(Vec2(), rng.Uniform(-0.3, 0.3));
 		// Above the top face, from a clearance of 0.3 down to an overlap of 0.1, anywhere along it
 		// and past its ends; tilted from flat to upright.
-		const double along = rng.Uniform(-2.6, 2.6);
-		const double top = isBox ? 0.5 : 0.0;
+		const FaceCase f = MakeFaceCase(i, rng, 2.6);
+		const double along = f.along;
 		const double tilt = rng.Uniform(-kPi, kPi) * (i % 3 == 0 ? 0.02 : 1.0);
 		const double rise = std::hypot(a * std::sin(tilt), b * std::cos(tilt)); // support along y
-		const Pose pa(ToWorld(pb, Vec2(along, top + rise + rng.Uniform(-0.1, 0.3))), Rot(tilt + pb.q.Angle()));
-		std::vector<Vec2> w;
-		for (int j = 0; j < count; ++j)
-			w.push_back(ToWorld(pb, v[j]));
+		const Pose pa(ToWorld(f.pb, Vec2(along, f.top + rise + rng.Uniform(-0.1, 0.3))), Rot(tilt + f.pb.q.Angle()));
+		auto support = [&](Vec2 n) {
+			const Vec2 nb = InvRotate(pa.q, n);
+			return Dot(pa.p, n) + std::hypot(a * nb.x, b * nb.y);
+		};
 		double angle = 0.0;
-		const double reference = EllipseGapByScan(a, b, pa, w, angle);
+		const double reference = GapByScan(support, f.w, 4096, angle);
 		CAPTURE(i);
 		CAPTURE(along);
 		CAPTURE(tilt);
-		const ContactResult r = ComputePolygonContact(*ellipse, pa, v, count, pb);
+		const ContactResult r = ComputePolygonContact(*ellipse, pa, f.v, f.count, f.pb);
 		REQUIRE(r.Ok());
 		// The reference never exceeds the true maximum; golden search leaves it ~1e-15 below.
 		CHECK(r.separation >= reference - 1e-12);
@@ -147,55 +172,26 @@ TEST_CASE("polygon contact: a heart against boxes and segments matches the brute
 	// gap over 1024 directions with the generic support search (Shape::Support, independent of
 	// the heart's own), then golden-section search between the best one's neighbours.
 	const auto heart = MakeHeart(0.2);
-	const Vec2 box[] = {{-1.0, -0.5}, {1.0, -0.5}, {1.0, 0.5}, {-1.0, 0.5}};
-	const Vec2 segment[] = {{-2.0, 0.0}, {2.0, 0.0}};
 	Random rng(63);
 	int resting = 0;
 	for (int i = 0; i < 120; ++i)
 	{
-		const bool isBox = i % 2 == 0;
-		const Vec2* v = isBox ? box : segment;
-		const int count = isBox ? 4 : 2;
-		const Pose pb(Vec2(), rng.Uniform(-0.3, 0.3));
 		// Upright, upside down (on both lobes) or at any angle; above the top face from a
 		// clearance of 0.2 down to an overlap of 0.05.
-		const double along = rng.Uniform(-2.4, 2.4);
-		const double top = isBox ? 0.5 : 0.0;
+		const FaceCase f = MakeFaceCase(i, rng, 2.4);
+		const double along = f.along;
 		const double tilt = i % 3 == 0 ? rng.Uniform(-0.02, 0.02) : i % 3 == 1 ? kPi + rng.Uniform(-0.02, 0.02) : rng.Angle();
-		const Rot q(tilt + pb.q.Angle());
-		const Vec2 up = Rotate(pb.q, Vec2(0.0, 1.0));
+		const Rot q(tilt + f.pb.q.Angle());
+		const Vec2 up = Rotate(f.pb.q, Vec2(0.0, 1.0));
 		const double rise = -Dot(Rotate(q, heart->Shape::Support(InvRotate(q, -1.0 * up))), up);
-		const Pose pa(ToWorld(pb, Vec2(along, top + rise + rng.Uniform(-0.05, 0.2))), q);
-		std::vector<Vec2> w;
-		for (int j = 0; j < count; ++j)
-			w.push_back(ToWorld(pb, v[j]));
-		auto gap = [&](double t) {
-			const Vec2 n(std::cos(t), std::sin(t));
-			double lowest = std::numeric_limits<double>::infinity();
-			for (const Vec2& p : w)
-				lowest = std::min(lowest, Dot(p, n));
-			return lowest - Dot(ToWorld(pa, heart->Shape::Support(InvRotate(pa.q, n))), n);
-		};
-		const int samples = 1024;
-		int best = 0;
-		std::vector<double> g(samples);
-		for (int k = 0; k < samples; ++k)
-			g[size_t(k)] = gap(2.0 * kPi * k / samples);
-		for (int k = 1; k < samples; ++k)
-			best = g[size_t(k)] > g[size_t(best)] ? k : best;
-		double lo = 2.0 * kPi * (best - 1) / samples, hi = 2.0 * kPi * (best + 1) / samples;
-		const double r = 0.6180339887498949;
-		double x1 = hi - r * (hi - lo), x2 = lo + r * (hi - lo), g1 = gap(x1), g2 = gap(x2);
-		for (int it = 0; it < 200 && hi - lo > 1e-15; ++it)
-		{
-			if (g1 < g2) { lo = x1; x1 = x2; g1 = g2; x2 = lo + r * (hi - lo); g2 = gap(x2); }
-			else { hi = x2; x2 = x1; g2 = g1; x1 = hi - r * (hi - lo); g1 = gap(x1); }
-		}
-		const double reference = std::max(g1, g2), angle = 0.5 * (lo + hi);
+		const Pose pa(ToWorld(f.pb, Vec2(along, f.top + rise + rng.Uniform(-0.05, 0.2))), q);
+		auto support = [&](Vec2 n) { return Dot(ToWorld(pa, heart->Shape::Support(InvRotate(pa.q, n))), n); };
+		double angle = 0.0;
+		const double reference = GapByScan(support, f.w, 1024, angle);
 		CAPTURE(i);
 		CAPTURE(along);
 		CAPTURE(tilt);
-		const ContactResult c = ComputePolygonContact(*heart, pa, v, count, pb);
+		const ContactResult c = ComputePolygonContact(*heart, pa, f.v, f.count, f.pb);
 		REQUIRE(c.Ok());
 		// The generic support reaches the tip only to 1e-11 of the size (the reference's gap is
 		// then that much larger); golden search leaves the reference ~1e-15 below its maximum.
@@ -206,4 +202,82 @@ TEST_CASE("polygon contact: a heart against boxes and segments matches the brute
 			++resting;
 	}
 	CHECK(resting > 10); // the resting-on-a-face cases (tip or lobes on the face) are exercised
+}
+
+namespace
+{
+// A superellipse under another class: every query forwarded, but SupportBounds left exact (the
+// default), so SeparatingAxisContact takes every candidate's support, as it did before its
+// superellipses skipped those their bounds rule out.
+class PlainForwarding final : public Shape
+{
+public:
+	explicit PlainForwarding(ShapePtr inner)
+		: Shape(inner->Kind(), inner->SurfaceLevel(), inner->IsConvex(), inner->IsSmoothConvex(), inner->LevelPower()),
+		  m_inner(std::move(inner))
+	{
+		Finalize(m_inner->BoundingRadius(), &m_inner->Mass());
+	}
+	std::string Describe() const override { return "forwarding " + m_inner->Describe(); }
+	double Level(Vec2 x) const override { return m_inner->Level(x); }
+	LevelDerivatives Derivatives(Vec2 x) const override { return m_inner->Derivatives(x); }
+	double RadiusAt(Vec2 u, double level) const override { return m_inner->RadiusAt(u, level); }
+	Vec2 Support(Vec2 d) const override { return m_inner->Support(d); }
+	double SupportValue(Vec2 d) const override { return m_inner->SupportValue(d); }
+
+private:
+	ShapePtr m_inner;
+};
+} // namespace
+
+TEST_CASE("polygon contact: a superellipse's skipped candidates change no bit of the answer")
+{
+	// SeparatingAxisContact skips a candidate axis whose gap with the superellipse's closed-form
+	// lower bound on the support value cannot beat the best found. Reference: the same shape
+	// behind PlainForwarding, whose candidates all take their supports: normal, separation and
+	// points must agree bit for bit, with fewer gap evaluations.
+	const std::vector<ShapePtr> shapes = {MakeSuperellipse(0.5, 0.3, 4.0, 4.0), MakeSuperellipse(0.7, 0.2, 2.5, 2.5),
+	                                      MakeSuperellipse(0.4, 0.4, 8.0, 8.0), MakeSuperellipse(0.6, 0.3, 4.0, 8.0),
+	                                      MakeSuperellipse(0.5, 0.3, 1.5, 1.5), MakeEllipse(0.5, 0.25)};
+	const Vec2 box[] = {{-1.0, -0.5}, {1.0, -0.5}, {1.0, 0.5}, {-1.0, 0.5}};
+	const Vec2 segment[] = {{-2.0, 0.0}, {2.0, 0.0}};
+	Random rng(64);
+	long fewer = 0, calls = 0;
+	for (const ShapePtr& shape : shapes)
+	{
+		const PlainForwarding twin(shape);
+		for (int i = 0; i < 200; ++i)
+		{
+			const bool isBox = i % 2 == 0;
+			const Vec2* v = isBox ? box : segment;
+			const int count = isBox ? 4 : 2;
+			const Pose pb(Vec2(rng.Uniform(-3.0, 3.0), rng.Uniform(-3.0, 3.0)), rng.Uniform(-0.3, 0.3));
+			// Resting flat (a third), tilted or at any angle; from 0.1 into the face to 0.4 above
+			// it, anywhere along it and past its ends.
+			const double tilt = i % 3 == 0 ? rng.Uniform(-0.01, 0.01) : rng.Angle();
+			const Rot q(tilt + pb.q.Angle());
+			const Vec2 up = Rotate(pb.q, Vec2(0.0, 1.0));
+			const double rise = shape->SupportValue(InvRotate(q, -1.0 * up));
+			const Pose pa(ToWorld(pb, Vec2(rng.Uniform(-2.6, 2.6), (isBox ? 0.5 : 0.0) + rng.Uniform(-0.1, 0.4))) + rise * up, q);
+			const Vec2 guess = Rotate(pb.q, Vec2(rng.Uniform(-0.2, 0.2), -1.0));
+			CAPTURE(shape->Describe());
+			CAPTURE(i);
+			const ContactResult r = SeparatingAxisContact(*shape, pa, v, count, pb, i % 4 == 1 ? &guess : nullptr);
+			const ContactResult t = SeparatingAxisContact(twin, pa, v, count, pb, i % 4 == 1 ? &guess : nullptr);
+			REQUIRE(r.Ok());
+			REQUIRE(t.Ok());
+			CHECK(r.separation == t.separation);
+			CHECK(r.normal.x == t.normal.x);
+			CHECK(r.normal.y == t.normal.y);
+			CHECK(r.pointA.x == t.pointA.x);
+			CHECK(r.pointA.y == t.pointA.y);
+			CHECK(r.pointB.x == t.pointB.x);
+			CHECK(r.pointB.y == t.pointB.y);
+			CHECK(r.iterations <= t.iterations);
+			fewer += t.iterations - r.iterations;
+			++calls;
+		}
+	}
+	// The skip is exercised: most of the 16 even directions and the far side of each face go.
+	CHECK(fewer > 10 * calls);
 }

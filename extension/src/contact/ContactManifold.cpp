@@ -123,15 +123,15 @@ bool ArcEnds(const Shape& shape, Vec2 db, Vec2 q, double tol, double ends[2])
 	return true;
 }
 
-// A smooth convex shape's face nearest the body point x of its surface, as polar angles (body
-// frame): face[0] its flattest point, face[1] and face[2] its ends; false where there is none.
-// The flattest point is where the curvature, descending from x along the surface (steps that
+// A smooth convex shape's face nearest its surface point at the polar angle t0, as polar angles
+// (body frame): face[0] its flattest point, face[1] and face[2] its ends; false where there is
+// none. The flattest point is where the curvature, descending from t0 along the surface (steps that
 // double from 0.01 rad, within a quarter turn), has its minimum (Brent's method, to 1e-8 rad; the
 // face's normal moves by the curvature times that, nothing at a flat point).
-bool FindFace(const Shape& shape, Vec2 x, double tol, double face[3])
+bool FindFace(const Shape& shape, double t0, double tol, double face[3])
 {
 	auto kappa = [&](double theta) { return LevelCurvature(shape, shape.SurfacePoint(theta)); };
-	const double t0 = std::atan2(x.y, x.x), k0 = kappa(t0), h = 0.01;
+	const double k0 = kappa(t0), h = 0.01;
 	const double kPlus = kappa(t0 + h), kMinus = kappa(t0 - h);
 	double lo = t0 - h, hi = t0 + h;
 	if (!(k0 <= kPlus && k0 <= kMinus))
@@ -175,10 +175,10 @@ bool FindFace(const Shape& shape, Vec2 x, double tol, double face[3])
 // differences and an off-face contact's one lie within π nearly always.
 inline double TurnRemainder(double d) { return std::fabs(d) <= kPi ? d : std::remainder(d, 2.0 * kPi); }
 
-// Whether the body point x lies on the face (angles as FindFace gives them).
-bool OnFace(const double face[3], Vec2 x)
+// Whether the body point at polar angle theta lies on the face (angles as FindFace gives them).
+bool OnFace(const double face[3], double theta)
 {
-	const double at = TurnRemainder(std::atan2(x.y, x.x) - face[0]);
+	const double at = TurnRemainder(theta - face[0]);
 	return at >= TurnRemainder(face[1] - face[0]) && at <= TurnRemainder(face[2] - face[0]);
 }
 
@@ -202,7 +202,12 @@ bool NearFacePlane(const Shape& shape, const double face[3], Vec2 x, double gap)
 // on it. Shapes with corners or infinite curvature on their axes (superellipse exponents below 2)
 // have no curvature to tell faces by: their face is the arc within tol of their extreme along d,
 // with d as its normal.
-Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace, bool& wasOn)
+// `plane`: whether the caller reads the face's normal and centre (the reference face, A's); B's
+// face gives its ends alone, and a smooth shape's kept face then takes two surface points, not
+// three and a gradient. `wasOn`: the contact point lay on the kept face at the last step (in),
+// and lies on it now (out).
+Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace,
+                      bool& wasOn, bool plane)
 {
 	const bool on = wasOn;
 	wasOn = false;
@@ -225,31 +230,35 @@ Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, doub
 	if (!CanHaveFaces(shape))
 		return out;
 	const Vec2 x = ToBody(side.pose, p);
-	if (!(cached && (OnFace(face, x) || (on && NearFacePlane(shape, face, x, 2.0 * tol)))))
+	// The contact point's polar angle, once: the kept face's test and the off-face record share it.
+	const double theta = std::atan2(x.y, x.x);
+	if (!(cached && (OnFace(face, theta) || (on && NearFacePlane(shape, face, x, 2.0 * tol)))))
 	{
 		// Off the face kept (or none kept): a contact point that stays near where none was found
 		// last time is taken to stay off faces, and a search runs only once it has moved on by
 		// 0.01 rad (a tenth of a blocky particle's face, whose arrival at a face kept the check
 		// above sees). In a settling pile most contacts on a blocky particle's rounded corners
 		// were searched again at every step.
-		const double theta = std::atan2(x.y, x.x);
 		if (std::fabs(TurnRemainder(theta - offFace)) < 0.01)
 			return out;
-		if (!MayReachFace(shape, x, tol) || !FindFace(shape, x, tol, face))
+		if (!MayReachFace(shape, x, tol) || !FindFace(shape, theta, tol, face))
 			cached = false;
 		else
 			cached = true;
-		if (!(cached && OnFace(face, x)))
+		if (!(cached && OnFace(face, theta)))
 		{
 			offFace = theta;
 			return out;
 		}
 	}
-	const Vec2 c = shape.SurfacePoint(face[0]);
 	wasOn = true;
 	out.valid = true;
-	out.normal = Rotate(side.pose.q, Normalize(shape.Gradient(c)));
-	out.centre = ToWorld(side.pose, c);
+	if (plane)
+	{
+		const Vec2 c = shape.SurfacePoint(face[0]);
+		out.normal = Rotate(side.pose.q, Normalize(shape.Gradient(c)));
+		out.centre = ToWorld(side.pose, c);
+	}
 	out.ends[0] = ToWorld(side.pose, shape.SurfacePoint(face[1]));
 	out.ends[1] = ToWorld(side.pose, shape.SurfacePoint(face[2]));
 	return out;
@@ -285,12 +294,13 @@ Face PolygonSideFace(const Vec2* w, int count, Vec2 p, Vec2 d)
 	return out;
 }
 
-Face SideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace, bool& wasOn)
+Face SideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, double face[3], bool& cached, double& offFace, bool& wasOn,
+              bool plane = true)
 {
 	if (side.point)
 		return {};
 	if (side.shape)
-		return side.shape->IsConvex() ? AnalyticSideFace(side, p, d, tol, face, cached, offFace, wasOn) : Face{};
+		return side.shape->IsConvex() ? AnalyticSideFace(side, p, d, tol, face, cached, offFace, wasOn, plane) : Face{};
 	if (side.vertices && side.count >= 2)
 		return PolygonSideFace(side.vertices, side.count, p, d);
 	return {};
@@ -659,7 +669,8 @@ ContactManifold BuildContactManifold(const ContactResult& c, const ManifoldSide&
 		MatchPartIds(out, places, b, *cache);
 		return out;
 	}
-	const Face fb = SideFace(b, c.pointB, -c.normal, tol, cache->faceB, cache->validB, cache->offFaceB, onB);
+	// (B's face gives its ends alone: A's is the reference.)
+	const Face fb = SideFace(b, c.pointB, -c.normal, tol, cache->faceB, cache->validB, cache->offFaceB, onB, false);
 	cache->onB = onB;
 	if (!fb.valid)
 		return m;
