@@ -573,3 +573,47 @@ TEST_CASE("BuildContactManifold: two hearts deep lobe on lobe keep both parts, e
 		}
 	}
 }
+
+TEST_CASE("BuildContactManifold: deep parts off centre keep their ids while the hearts slide")
+{
+	// Heart B upside down on heart A, 6 cm deep and 10 cm to the side, sliding sideways by 1 mm a
+	// step for 10 steps: the overlap has two parts, either side of A's axis (brute force of the
+	// outlines), at every step, and each part's point keeps its id throughout. (The manifold's
+	// points are the parts' points moved along the common normal onto their separations, here
+	// some centimetres; matched by those, each step's parts lay farther than a tenth of the
+	// heart from the last step's, and took new ids: 8 changes in these 10 steps.)
+	const LD alpha = 0.2L;
+	const ShapePtr heart = MakeHeart(double(alpha));
+	const Pose pa(Vec2(0.0, 0.0), 0.0);
+	const double top = heart->Support(Vec2(0.0, 1.0)).y;
+	const std::vector<WorldPoint> outlineA = HeartOutline(alpha, pa, 20000);
+	ManifoldCache cache;
+	int idOfSide[2] = {-1, -1};
+	for (int i = 0; i <= 10; ++i)
+	{
+		CAPTURE(i);
+		const Pose pb(Vec2(0.1 + 0.001 * i, 2.0 * top - 0.06), kPi);
+		const ContactResult c = ComputeContact(*heart, pa, *heart, pb);
+		REQUIRE(c.Ok());
+		const ContactManifold m = BuildContactManifold(c, ManifoldSide{heart.get(), pa}, ManifoldSide{heart.get(), pb}, kTol, 0.0, 0.0, &cache);
+		const std::vector<WorldPoint> outlineB = HeartOutline(alpha, pb, 20000);
+		const PartReference parts[2] = {OverlapOnSide(alpha, outlineA, outlineB, -1), OverlapOnSide(alpha, outlineA, outlineB, 1)};
+		REQUIRE(parts[0].points > 0);
+		REQUIRE(parts[1].points > 0);
+		REQUIRE(m.count == 2);
+		for (int k = 0; k < 2; ++k)
+		{
+			CAPTURE(k);
+			// The point's side: the part whose x range (widened by 2 cm) holds it, and only one.
+			const double x = m.points[k].pointB.x;
+			const bool left = x >= double(parts[0].xMin) - 0.02 && x <= double(parts[0].xMax) + 0.02;
+			const bool right = x >= double(parts[1].xMin) - 0.02 && x <= double(parts[1].xMax) + 0.02;
+			REQUIRE(left != right);
+			const int side = right ? 1 : 0;
+			if (idOfSide[side] >= 0)
+				CHECK(m.points[k].id == idOfSide[side]);
+			idOfSide[side] = m.points[k].id;
+		}
+		CHECK(m.points[0].id != m.points[1].id);
+	}
+}
