@@ -638,3 +638,120 @@ TEST_CASE("BuildContactManifold: a heart's tip wedged against another keeps two 
 	CHECK(turns.back() <= 0.1);
 	CHECK(total <= 0.2);
 }
+
+namespace
+{
+// How far B's outline points on one side of A's axis (x < 0: side −1, else 1) must move along n
+// before none lies inside A: steps of 0.1 mm out to 0.4 m, then bisection (brute force).
+LD EscapeAlong(LD alpha, const std::vector<WorldPoint>& outlineB, int side, LD nx, LD ny)
+{
+	auto clear = [&](LD s) {
+		for (const WorldPoint& q : outlineB)
+			if ((q.x > 0.0L ? 1 : -1) == side && InsideHeart(alpha, q.x + s * nx, q.y + s * ny))
+				return false;
+		return true;
+	};
+	LD lo = 0.0L, hi = 0.0L;
+	while (!clear(hi) && hi < 0.4L)
+	{
+		lo = hi;
+		hi += 1e-4L;
+	}
+	for (int it = 0; it < 30; ++it)
+		(clear(0.5L * (lo + hi)) ? hi : lo) = 0.5L * (lo + hi);
+	return hi;
+}
+} // namespace
+
+TEST_CASE("BuildContactManifold: two hearts deep lobe on lobe keep both parts, each as deep as moving out along the normal undoes")
+{
+	// Heart B upside down on heart A, lobe on lobe, 8 and 9 cm deep (beyond a tenth of the
+	// heart's bounding radius, 6.5 cm): the overlap still has two parts, one either side of A's
+	// axis (their depths from the brute force of two outlines). The manifold holds both, its
+	// normal upright to 0.05 rad, each point in its part and as deep as the distance B's outline
+	// there must move along the normal to leave A (brute force, within 3 %): what the position
+	// solver must undo. (With the contact's point alone for overlaps this deep, the deepest part
+	// by the scaling factor changed from pose to pose in a loaded pile, and the normal with it.)
+	const LD alpha = 0.2L;
+	const ShapePtr heart = MakeHeart(double(alpha));
+	const Pose pa(Vec2(0.0, 0.0), 0.0);
+	const double top = heart->Support(Vec2(0.0, 1.0)).y;
+	REQUIRE(0.08 > 0.1 * heart->BoundingRadius());
+	const std::vector<WorldPoint> outlineA = HeartOutline(alpha, pa, 20000);
+	for (double depth : {0.08, 0.09})
+	{
+		CAPTURE(depth);
+		const Pose pb(Vec2(0.003, 2.0 * top - depth), kPi + 0.002);
+		const ContactResult c = ComputeContact(*heart, pa, *heart, pb);
+		REQUIRE(c.Ok());
+		ManifoldCache cache;
+		const ContactManifold m = BuildContactManifold(c, ManifoldSide{heart.get(), pa}, ManifoldSide{heart.get(), pb}, kTol, 0.0, 0.0, &cache);
+		const std::vector<WorldPoint> outlineB = HeartOutline(alpha, pb, 20000);
+		const PartReference parts[2] = {OverlapOnSide(alpha, outlineA, outlineB, -1), OverlapOnSide(alpha, outlineA, outlineB, 1)};
+		REQUIRE(parts[0].points > 0);
+		REQUIRE(parts[1].points > 0);
+		CHECK(parts[0].depth > 0.1L * LD(heart->BoundingRadius()));
+		CHECK(parts[1].depth > 0.1L * LD(heart->BoundingRadius()));
+		REQUIRE(m.count == 2);
+		CHECK(m.normal.y > std::cos(0.05));
+		bool seen[2] = {false, false};
+		for (int k = 0; k < 2; ++k)
+		{
+			CAPTURE(k);
+			const int side = m.points[k].pointB.x > 0.0 ? 1 : 0;
+			CHECK(!seen[side]);
+			seen[side] = true;
+			const PartReference& r = parts[side];
+			CHECK(m.points[k].pointB.x >= double(r.xMin) - 1e-3);
+			CHECK(m.points[k].pointB.x <= double(r.xMax) + 1e-3);
+			const LD escape = EscapeAlong(alpha, outlineB, side == 1 ? 1 : -1, LD(m.normal.x), LD(m.normal.y));
+			MESSAGE("depth " << depth << " side " << side << ": separation " << m.points[k].separation << ", part depth "
+			                 << double(r.depth) << ", escape along the normal " << double(escape));
+			CHECK(m.points[k].separation == doctest::Approx(-double(escape)).epsilon(0.03));
+		}
+	}
+}
+
+TEST_CASE("BuildContactManifold: deep parts off centre keep their ids while the hearts slide")
+{
+	// Heart B upside down on heart A, 6 cm deep and 10 cm to the side, sliding sideways by 1 mm a
+	// step for 10 steps: the overlap has two parts, either side of A's axis (brute force of the
+	// outlines), at every step, and each part's point keeps its id throughout. (The manifold's
+	// points are the parts' points moved along the common normal onto their separations, here
+	// some centimetres; matched by those, each step's parts lay farther than a tenth of the
+	// heart from the last step's, and took new ids: 8 changes in these 10 steps.)
+	const LD alpha = 0.2L;
+	const ShapePtr heart = MakeHeart(double(alpha));
+	const Pose pa(Vec2(0.0, 0.0), 0.0);
+	const double top = heart->Support(Vec2(0.0, 1.0)).y;
+	const std::vector<WorldPoint> outlineA = HeartOutline(alpha, pa, 20000);
+	ManifoldCache cache;
+	int idOfSide[2] = {-1, -1};
+	for (int i = 0; i <= 10; ++i)
+	{
+		CAPTURE(i);
+		const Pose pb(Vec2(0.1 + 0.001 * i, 2.0 * top - 0.06), kPi);
+		const ContactResult c = ComputeContact(*heart, pa, *heart, pb);
+		REQUIRE(c.Ok());
+		const ContactManifold m = BuildContactManifold(c, ManifoldSide{heart.get(), pa}, ManifoldSide{heart.get(), pb}, kTol, 0.0, 0.0, &cache);
+		const std::vector<WorldPoint> outlineB = HeartOutline(alpha, pb, 20000);
+		const PartReference parts[2] = {OverlapOnSide(alpha, outlineA, outlineB, -1), OverlapOnSide(alpha, outlineA, outlineB, 1)};
+		REQUIRE(parts[0].points > 0);
+		REQUIRE(parts[1].points > 0);
+		REQUIRE(m.count == 2);
+		for (int k = 0; k < 2; ++k)
+		{
+			CAPTURE(k);
+			// The point's side: the part whose x range (widened by 2 cm) holds it, and only one.
+			const double x = m.points[k].pointB.x;
+			const bool left = x >= double(parts[0].xMin) - 0.02 && x <= double(parts[0].xMax) + 0.02;
+			const bool right = x >= double(parts[1].xMin) - 0.02 && x <= double(parts[1].xMax) + 0.02;
+			REQUIRE(left != right);
+			const int side = right ? 1 : 0;
+			if (idOfSide[side] >= 0)
+				CHECK(m.points[k].id == idOfSide[side]);
+			idOfSide[side] = m.points[k].id;
+		}
+		CHECK(m.points[0].id != m.points[1].id);
+	}
+}
