@@ -23,7 +23,8 @@
 //           (L giving up on an overlapping pair → OverlapAxis).
 //  level chains: CircleLevel   closed form
 //                EllipseLevel  ellipse pair (Perram–Wertheim)  → NewtonLevel
-//                NewtonLevel   Newton from the warm start      → Newton cold → min–max → grid (polished)
+//                NewtonLevel   Newton from the warm start      → Newton cold → min–max → Newton in A's
+//                              frame, then B's (two superellipses) → grid (polished)
 //                GridLevel     the grid's fixed point (non-convex pairs are refused before the table)
 //  Explicit methods, for any pair: MethodChoice::newton: from Newton alone (level: Newton alone);
 //  MethodChoice::grid: Grid (level: GridLevel).
@@ -104,6 +105,39 @@ LevelResult NewtonAlone(const Shape& a, const Pose& pa, const Shape& b, const Po
 }
 } // namespace
 
+namespace
+{
+// Two smooth superellipses by Newton in one particle's body frame (SolveSuperellipsePairLevel),
+// cold, in A's frame and then in B's. Needles crossing deep inside each other (common levels of
+// 1e-30 to 1e-9, where a needle with an exponent 2 across it has a level set 1e-15 of its size
+// thick) are out of reach of the generic solvers, which evaluate both shapes at world
+// coordinates (rounded to 1e-16 of up to 1e3 sizes), and in reach of a frame whose origin is the
+// thin particle's centre: there its coordinates are exact, and only the other particle's are
+// rounded, against a level set that is not thin. Which particle is the thin one the solve
+// finds out: each frame's exit tests the conditions to its own rounding.
+LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)
+{
+	LevelResult r;
+	r.failure = "Newton in a particle's frame needs two smooth superellipses";
+	const SuperellipseShape* sa = AsSmoothSuperellipse(a);
+	const SuperellipseShape* sb = sa ? AsSmoothSuperellipse(b) : nullptr;
+	if (!sb)
+		return r;
+	r = SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, nullptr);
+	if (r.Ok())
+		return r;
+	const int spent = r.iterations;
+	LevelResult other = SolveSuperellipsePairLevel(*sb, pb, *sa, pa, options, nullptr);
+	other.iterations += spent;
+	if (other.Ok())
+	{
+		other.normal = -other.normal;
+		other.multiplier = 1.0 / other.multiplier;
+	}
+	return other;
+}
+} // namespace
+
 LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
                              const WarmStart* warm, LevelSlide* slide)
 {
@@ -115,6 +149,12 @@ LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, con
 		const int spent = r.iterations;
 		r = SolveCommonLevelMinMax(a, pa, b, pb, options);
 		r.iterations += spent;
+		if (!r.Ok())
+		{
+			const int spentMinMax = r.iterations;
+			r = SuperellipseInItsFrame(a, pa, b, pb, options);
+			r.iterations += spentMinMax;
+		}
 		if (!r.Ok())
 		{
 			// Min–max that stops short of the standard says so; the grid, which needs neither

@@ -355,29 +355,36 @@ bool LineSearch(const PairInA& p, const Point& q, const double delta[3], Point& 
 	return false;
 }
 
-// How far an evaluated point is from solving the conditions (ResidualOfConditions): B's body
-// coordinates there, ξ − c turned, are rounded to a part in 1e16 of the larger of |ξ| and |c|,
-// and c itself to a part in 1e16 of the centres' world coordinates.
-ConditionsResidual ResidualAt(const PairInA& p, const Point& q, const Pose& pa, const Pose& pb, double size)
+// How far an evaluated point is from solving the conditions (ResidualOfConditions). A is
+// evaluated at ξ itself, in its own body frame, each axis apart (its terms |ξx/a|^n and
+// |ξy/b|^m and their derivatives to a few parts in 1e16 of themselves, whatever the size of ξ):
+// its floors are those few parts alone. B's body coordinates there, ξ − c turned, are rounded to
+// a part in 1e16 of the larger of |ξ| and |c| (c itself, the centres' difference, is the input's,
+// as the reference takes it). The world coordinates do not enter: a needle crossing another deep
+// inside it at a level of 1e-30 has a level set 1e-15 of its size thick, which world
+// coordinates of 1e3 sizes cannot hold and A's frame does.
+double RoundingOfB(const PairInA& p, const Point& q)
 {
-	const double worldReach = std::max(Length(pa.p), Length(pb.p)) / size;
-	const double delta = std::numeric_limits<double>::epsilon() * std::max({Length(q.xi), Length(p.c), worldReach});
+	return std::numeric_limits<double>::epsilon() * std::max(Length(q.xi), Length(p.c));
+}
+ConditionsResidual ResidualAt(const PairInA& p, const Point& q)
+{
 	return ResidualOfConditions(q.A.psi, q.B.psi, Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), Sym22{q.A.hxx, q.A.hxy, q.A.hyy},
-	                            Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, delta);
+	                            Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, 0.0, RoundingOfB(p, q));
 }
 
 // Whether an evaluated point solves the conditions to what double precision allows
 // (ConditionsHold's standard).
-bool Solved(const PairInA& p, const Point& q, const Pose& pa, const Pose& pb, double size)
+bool Solved(const PairInA& p, const Point& q)
 {
 	if (ConditionsWithin(q.A.psi, q.B.psi, Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), 1e-11, 1e-11))
 		return true; // (the common case, before the roots of the reach)
-	return ResidualAt(p, q, pa, pb, size).Within(1e-11, 1e-10, p.q);
+	return ResidualAt(p, q).Within(1e-11, 1e-10, p.q);
 }
 
 // The answer at the solved point q (opposed gradients and a positive multiplier, else the
 // failure), and what the contact needs from it in `at`.
-LevelResult Answer(const PairInA& p, const Pose& pa, const Pose& pb, double size, const Point& q, const WarmStart* warm,
+LevelResult Answer(const PairInA& p, const Pose& pa, double size, const Point& q, const WarmStart* warm,
                    SuperellipsePairPoint* at, LevelResult result)
 {
 	const Vec2 nA = Normalize(Vec2(q.A.gx, q.A.gy)), nB = Normalize(Vec2(q.B.gx, q.B.gy));
@@ -390,14 +397,13 @@ LevelResult Answer(const PairInA& p, const Pose& pa, const Pose& pb, double size
 	// taken unevaluated, a singular Jacobian at rounding level) promises a solution only where
 	// the conditions hold at the point (Solved): deep inside each other, needles' gauges agree to
 	// 1e-11 while their normals are 0.01 to 2 rad apart, and the contact's normal is their mean.
-	// There the double point's rounding alone turns the normals by 1e3 rad or more
-	// (RoundingKeepsNormals), and agreement in double says nothing.
-	const double reach2 = std::max(LengthSquared(pa.p), LengthSquared(pb.p)) / (size * size);
-	const double eps = std::numeric_limits<double>::epsilon();
-	if (!Solved(p, q, pa, pb, size) ||
+	// There the point's rounding alone turns the normals by 1e3 rad or more (RoundingKeepsNormals,
+	// with A's point exact in its frame and B's rounded as ResidualAt says), and agreement in
+	// double says nothing.
+	const double roundingB = RoundingOfB(p, q);
+	if (!Solved(p, q) ||
 	    !RoundingKeepsNormals(Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), Sym22{q.A.hxx, q.A.hxy, q.A.hyy},
-	                          Sym22{q.B.hxx, q.B.hxy, q.B.hyy},
-	                          eps * eps * std::max({LengthSquared(q.xi), LengthSquared(p.c), reach2})))
+	                          Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, 0.0, roundingB * roundingB))
 	{
 		result.failure = "stopped short of a solution (its levels or normals disagree beyond rounding)";
 		return result;
@@ -486,7 +492,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		const Solve3Result step = SolveBordered(hxx, hxy, hyy, q.B.gx, q.B.gy, dx, dy, minusR);
 		if (!BorderedStepUsable(step.rcond, hxx, hxy, hyy, q.B.gx, q.B.gy, dx, dy))
 		{
-			if (q.relativeSquared < 1e-11 * 1e-11 || Solved(p, q, pa, pb, size))
+			if (q.relativeSquared < 1e-11 * 1e-11 || Solved(p, q))
 				break; // solved: the Jacobian is singular only at the answer's rounding level
 			result.failure = "singular or ill-conditioned Jacobian";
 			return result;
@@ -538,10 +544,10 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		double alpha = 1.0;
 		if (!LineSearch(p, q, delta, *trial, alpha))
 		{
-			if (Solved(p, q, pa, pb, size))
+			if (Solved(p, q))
 				break; // rounding floor
 			// Near the solution the full step, as the generic solver takes it.
-			if (!(forced < 2 && ResidualAt(p, q, pa, pb, size).Within(1e-4, 1e-4, p.q)))
+			if (!(forced < 2 && ResidualAt(p, q).Within(1e-4, 1e-4, p.q)))
 			{
 				result.failure = "line search stalled (no step lowers the residual)";
 				return result;
@@ -554,7 +560,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		std::swap(current, trial);
 		const bool full = limit == 1.0 && alpha == 1.0;
 		// A step below the tolerance ends the solve only at a solution (the generic solver's rule).
-		if ((full && moved <= options.stepTolerance && Solved(p, *current, pa, pb, size)) ||
+		if ((full && moved <= options.stepTolerance && Solved(p, *current)) ||
 		    current->relativeSquared < 1e-15 * 1e-15)
 			break;
 		previousXi = full ? stepXi : 0.0;
@@ -565,7 +571,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 			return result;
 		}
 	}
-	return Answer(p, pa, pb, size, *current, warm, at, result);
+	return Answer(p, pa, size, *current, warm, at, result);
 }
 
 } // namespace b2a
