@@ -108,14 +108,16 @@ LevelResult NewtonAlone(const Shape& a, const Pose& pa, const Shape& b, const Po
 namespace
 {
 // Two smooth superellipses by Newton in one particle's body frame (SolveSuperellipsePairLevel),
-// cold, in A's frame and then in B's. Needles crossing deep inside each other (common levels of
-// 1e-30 to 1e-9, where a needle with an exponent 2 across it has a level set 1e-15 of its size
-// thick) are out of reach of the generic solvers, which evaluate both shapes at world
-// coordinates (rounded to 1e-16 of up to 1e3 sizes), and in reach of a frame whose origin is the
-// thin particle's centre: there its coordinates are exact, and only the other particle's are
-// rounded, against a level set that is not thin. Which particle is the thin one the solve
-// finds out: each frame's exit tests the conditions to its own rounding.
-LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)
+// in A's frame and then in B's: cold, or from `start` (a world point: a grid's candidate).
+// Needles crossing deep inside each other (common levels of 1e-30 to 1e-9, where a needle with
+// an exponent 2 across it has a level set 1e-15 of its size thick) are out of reach of the
+// generic solvers, which evaluate both shapes at world coordinates (rounded to 1e-16 of up to
+// 1e3 sizes), and in reach of a frame whose origin is the thin particle's centre: there its
+// coordinates are exact, and only the other particle's are rounded, against a level set that is
+// not thin. Which particle is the thin one the solve finds out: each frame's exit tests the
+// conditions to its own rounding.
+LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                                   const Vec2* start = nullptr)
 {
 	LevelResult r;
 	r.failure = "Newton in a particle's frame needs two smooth superellipses";
@@ -123,11 +125,17 @@ LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& 
 	const SuperellipseShape* sb = sa ? AsSmoothSuperellipse(b) : nullptr;
 	if (!sb)
 		return r;
-	r = SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, nullptr);
+	WarmStart from; // the start in the solving particle's frame (μ balanced at its first step)
+	from.valid = start != nullptr;
+	if (start)
+		from.localPoint = ToBody(pa, *start);
+	r = SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, start ? &from : nullptr);
 	if (r.Ok())
 		return r;
 	const int spent = r.iterations;
-	LevelResult other = SolveSuperellipsePairLevel(*sb, pb, *sa, pa, options, nullptr);
+	if (start)
+		from.localPoint = ToBody(pb, *start);
+	LevelResult other = SolveSuperellipsePairLevel(*sb, pb, *sa, pa, options, start ? &from : nullptr);
 	other.iterations += spent;
 	if (other.Ok())
 	{
@@ -135,6 +143,30 @@ LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& 
 		other.multiplier = 1.0 / other.multiplier;
 	}
 	return other;
+}
+
+// The grid's common level sampling B's level surface (or A's, `flipped`), held to the solvers'
+// standard (CheckGridCommonLevel); where its polish stops short, Newton in a particle's frame
+// from its candidate point (SuperellipseInItsFrame: needles crossing deep inside each other that
+// it does not solve cold). Answers for (A, B) either way.
+LevelResult GridLevelChecked(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                             bool flipped)
+{
+	const LevelResult grid = flipped ? SolveCommonLevelGrid(b, pb, a, pa, options) : SolveCommonLevelGrid(a, pa, b, pb, options);
+	LevelResult r = flipped ? CheckGridCommonLevel(b, pb, a, pa, options, grid) : CheckGridCommonLevel(a, pa, b, pb, options, grid);
+	if (r.Ok() && flipped)
+	{
+		r.normal = -r.normal;
+		r.multiplier = r.multiplier > 0.0 ? 1.0 / r.multiplier : 0.0;
+	}
+	if (r.Ok() || !grid.Ok())
+		return r;
+	LevelResult framed = SuperellipseInItsFrame(a, pa, b, pb, options, &grid.point);
+	r.iterations += framed.iterations;
+	if (!framed.Ok())
+		return r; // the grid's failure
+	framed.iterations = r.iterations; // (a Newton answer: its method stays newton)
+	return framed;
 }
 } // namespace
 
@@ -162,7 +194,7 @@ LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, con
 			// standard (its samples and bracket stop at their own tolerances: needles crossing
 			// deep inside each other were answered 0.5 off in level, 3 rad in normal).
 			const int spentBoth = r.iterations;
-			r = CheckGridCommonLevel(a, pa, b, pb, options, SolveCommonLevelGrid(a, pa, b, pb, options));
+			r = GridLevelChecked(a, pa, b, pb, options, false);
 			if (!r.Ok())
 			{
 				// The grid samples B's level-C surface; where the minimum of λA over it is a
@@ -170,14 +202,9 @@ LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, con
 				// B's of 1e5, far apart: C ~ 1e24), A's samples find it, as the contact's grid
 				// tries both sides (GridContact).
 				const int spentOne = r.iterations;
-				LevelResult other = CheckGridCommonLevel(b, pb, a, pa, options, SolveCommonLevelGrid(b, pb, a, pa, options));
+				LevelResult other = GridLevelChecked(a, pa, b, pb, options, true);
 				other.iterations += spentOne;
-				if (other.Ok())
-				{
-					other.normal = -other.normal;
-					other.multiplier = other.multiplier > 0.0 ? 1.0 / other.multiplier : 0.0;
-				}
-				else
+				if (!other.Ok())
 					other.failure = r.failure;
 				r = other;
 			}
