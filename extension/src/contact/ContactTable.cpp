@@ -108,7 +108,8 @@ LevelResult NewtonAlone(const Shape& a, const Pose& pa, const Shape& b, const Po
 namespace
 {
 // Two smooth superellipses by Newton in one particle's body frame (SolveSuperellipsePairLevel),
-// in A's frame and then in B's: cold, or from `start` (a world point: a grid's candidate).
+// in A's frame and then in B's: cold, or from `start` (a world point: a grid's candidate; in each
+// frame, LevelMatchedStart).
 // Needles crossing deep inside each other (common levels of 1e-30 to 1e-9, where a needle with
 // an exponent 2 across it has a level set 1e-15 of its size thick) are out of reach of the
 // generic solvers, which evaluate both shapes at world coordinates (rounded to 1e-16 of up to
@@ -116,6 +117,56 @@ namespace
 // coordinates are exact, and only the other particle's are rounded, against a level set that is
 // not thin. Which particle is the thin one the solve finds out: each frame's exit tests the
 // conditions to its own rounding.
+// A start in s's body frame from the world point X, for needles crossing deep inside each other.
+// Its coordinate across s's thinner level set at C = o's level there (the axis whose extent,
+// a·C^{1/n} or b·C^{1/m}, is the smaller) is set so that s's level is C too, on the side where
+// o's level falls: beside a needle with an exponent 2 across it, at a level of 1e-23, that
+// coordinate is 1e-14 of the size, and a point rounded in world coordinates (a grid's candidate)
+// has it at 1e-19 or 1e-22, on the needle's axis, where its level is flat across it and Newton
+// creeps. With `crossing`, X first moves along s's axis to where o's long axis crosses it: where
+// both level sets are needles, one's tip touches the other's flank there, and a grid's candidate
+// may be several of o's thicknesses (1e-10 of the size) away from it.
+Vec2 LevelMatchedStart(const SuperellipseShape& s, const Pose& ps, const SuperellipseShape& o, const Pose& po, Vec2 X, bool crossing)
+{
+	const Pose rel = Relative(ps, po); // o's centre and axes in s's frame
+	Vec2 x = ToBody(ps, X), g;
+	auto levelOfO = [&](Vec2 at) {
+		const Vec2 xo = InvRotate(rel.q, at - rel.p);
+		g = Rotate(rel.q, o.Gradient(xo));
+		return o.Level(xo);
+	};
+	auto thinX = [](const SuperellipseShape& k, double C) { return k.A() * std::pow(C, 1.0 / k.N()) <= k.B() * std::pow(C, 1.0 / k.M()); };
+	double C = levelOfO(x);
+	if (!(C > 0.0) || !std::isfinite(C) || !IsFinite(g))
+		return x;
+	if (crossing)
+	{
+		const Vec2 d = Rotate(rel.q, thinX(o, C) ? Vec2(0.0, 1.0) : Vec2(1.0, 0.0)); // o's long axis
+		const bool alongY = thinX(s, C);                                                 // s's long axis
+		const double t = alongY ? -rel.p.x / d.x : -rel.p.y / d.y;
+		const Vec2 at = alongY ? Vec2(0.0, rel.p.y + t * d.y) : Vec2(rel.p.x + t * d.x, 0.0);
+		if (!IsFinite(at))
+			return x;
+		x = at;
+		C = levelOfO(x);
+		if (!(C > 0.0) || !std::isfinite(C) || !IsFinite(g))
+			return x;
+	}
+	if (thinX(s, C))
+	{
+		const double rest = C - std::pow(std::fabs(x.y) / s.B(), s.M());
+		if (rest > 0.0)
+			x.x = -std::copysign(s.A() * std::pow(rest, 1.0 / s.N()), g.x);
+	}
+	else
+	{
+		const double rest = C - std::pow(std::fabs(x.x) / s.A(), s.N());
+		if (rest > 0.0)
+			x.y = -std::copysign(s.B() * std::pow(rest, 1.0 / s.M()), g.y);
+	}
+	return x;
+}
+
 LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
                                    const Vec2* start = nullptr)
 {
@@ -125,24 +176,37 @@ LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& 
 	const SuperellipseShape* sb = sa ? AsSmoothSuperellipse(b) : nullptr;
 	if (!sb)
 		return r;
+	// From a start: in each frame the level matched across the particle, then at the needles'
+	// crossing (LevelMatchedStart), on the levels' gauge and then on their logarithms.
 	WarmStart from; // the start in the solving particle's frame (μ balanced at its first step)
-	from.valid = start != nullptr;
-	if (start)
-		from.localPoint = ToBody(pa, *start);
-	r = SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, start ? &from : nullptr);
-	if (r.Ok())
-		return r;
-	const int spent = r.iterations;
-	if (start)
-		from.localPoint = ToBody(pb, *start);
-	LevelResult other = SolveSuperellipsePairLevel(*sb, pb, *sa, pa, options, start ? &from : nullptr);
-	other.iterations += spent;
-	if (other.Ok())
-	{
-		other.normal = -other.normal;
-		other.multiplier = 1.0 / other.multiplier;
-	}
-	return other;
+	from.valid = true;
+	int spent = 0;
+	for (const bool inB : {false, true})
+		for (const bool log : {false, true})
+			for (const bool crossing : {false, true})
+			{
+				if (!start && (crossing || log))
+					continue;
+				if (start)
+					from.localPoint = inB ? LevelMatchedStart(*sb, pb, *sa, pa, *start, crossing)
+					                      : LevelMatchedStart(*sa, pa, *sb, pb, *start, crossing);
+				const WarmStart* w = start ? &from : nullptr;
+				const SuperellipseShape &s = inB ? *sb : *sa, &o = inB ? *sa : *sb;
+				const Pose &ps = inB ? pb : pa, &po = inB ? pa : pb;
+				r = log ? SolveSuperellipsePairLogLevel(s, ps, o, po, options, w) : SolveSuperellipsePairLevel(s, ps, o, po, options, w);
+				spent += r.iterations;
+				r.iterations = spent;
+				if (r.Ok())
+				{
+					if (inB)
+					{
+						r.normal = -r.normal;
+						r.multiplier = 1.0 / r.multiplier;
+					}
+					return r;
+				}
+			}
+	return r;
 }
 
 // The grid's common level sampling B's level surface (or A's, `flipped`), held to the solvers'
