@@ -280,7 +280,19 @@ Check CheckAnswer(const Config& c, const Answer& r, const Posed& A, const Posed&
 	const LD rounding = std::numeric_limits<double>::epsilon() * std::max({ref::Len(Xc), ref::Len(A.pose.p), ref::Len(B.pose.p)});
 	const LD spreadA = NormalSpread(A, Xc, rounding), spreadB = NormalSpread(B, Xc, rounding);
 	if (std::max(spreadA, spreadB) > 0.1L * kWrongNormal)
+	{
 		expected = spreadA <= spreadB ? na : V{-nb.x, -nb.y};
+		// And the level and point from Newton in the thinner particle's frame (PolishInThinFrame),
+		// where its level set, 1e-15 of its size thick at levels of 1e-30, is held exactly.
+		const bool supers = A.shape.kind == RefShape::Kind::superellipse && B.shape.kind == RefShape::Kind::superellipse;
+		const LevelSolution framed = problem == Problem::common && supers ? PolishInThinFrame(A, B, X, L, c.size) : LevelSolution{};
+		if (framed.ok)
+		{
+			k.point = double(ref::Len(X - framed.point) / c.size);
+			k.level = double(std::fabs(L - framed.level) / framed.level);
+			expected = framed.normal;
+		}
+	}
 	k.normal = Angle(n, expected);
 	return k;
 }
