@@ -366,9 +366,16 @@ inline LevelSolution PolishInFrame(const Posed& A, const Posed& B, V X, LD L, LD
 				x.y = -std::copysign(s.b * std::pow(rest, 1.0L / s.m), g.y);
 		}
 	}
+	// Polish's own test does not see a needle's tip, whose normal turns over 1e-24 of the size:
+	// solved here means the normals opposed to 1e-12 rad in the frame.
+	auto opposed = [&](V at) {
+		const V na = ref::Unit(WorldDeriv(A1, at).grad), nb = ref::Unit(WorldDeriv(B1, at).grad);
+		return std::atan2(std::fabs(ref::Cross(na, nb)), -ref::Dot(na, nb)) <= 1e-12L;
+	};
 	LevelSolution sol = Polish(A1, B1, Problem::common, x, L, size);
-	for (int k = 0; k < 5 && !sol.ok && std::isfinite(sol.level); ++k)
+	for (int k = 0; k < 30 && !(sol.ok && opposed(sol.point)) && std::isfinite(sol.level); ++k)
 		sol = Polish(A1, B1, Problem::common, sol.point, sol.level, size);
+	sol.ok = sol.ok && opposed(sol.point);
 	sol.point = ref::ToWorldL(f, sol.point);
 	sol.normal = ref::RotateL(f, sol.normal);
 	return sol;

@@ -23,8 +23,9 @@
 //           (L giving up on an overlapping pair → OverlapAxis).
 //  level chains: CircleLevel   closed form
 //                EllipseLevel  ellipse pair (Perram–Wertheim)  → NewtonLevel
-//                NewtonLevel   Newton from the warm start      → Newton cold → min–max → Newton in A's
-//                              frame, then B's (two superellipses) → grid (polished)
+//                NewtonLevel   Newton from the warm start      → Newton cold → Newton in A's frame, then
+//                              B's (two superellipses) → min–max → grid (polished, else Newton in a
+//                              particle's frame from its point)
 //                GridLevel     the grid's fixed point (non-convex pairs are refused before the table)
 //  Explicit methods, for any pair: MethodChoice::newton: from Newton alone (level: Newton alone);
 //  MethodChoice::grid: Grid (level: GridLevel).
@@ -193,7 +194,7 @@ LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& 
 				const WarmStart* w = start ? &from : nullptr;
 				const SuperellipseShape &s = inB ? *sb : *sa, &o = inB ? *sa : *sb;
 				const Pose &ps = inB ? pb : pa, &po = inB ? pa : pb;
-				r = log ? SolveSuperellipsePairLogLevel(s, ps, o, po, options, w) : SolveSuperellipsePairLevel(s, ps, o, po, options, w);
+				r = SolveSuperellipsePairLevelChecked(s, ps, o, po, options, w, log);
 				spent += r.iterations;
 				r.iterations = spent;
 				if (r.Ok())
@@ -242,14 +243,17 @@ LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, con
 		r = SolveCommonLevelNewton(a, pa, b, pb, options, nullptr, slide);
 	if (!r.Ok())
 	{
+		// Two superellipses first in a particle's own frame, whose exit holds the answer to the
+		// standard wherever it is thin; the min–max and the grid, in world coordinates, may only
+		// meet it to their rounding (normals to 1e-4 rad) where a needle is thinner than that.
 		const int spent = r.iterations;
-		r = SolveCommonLevelMinMax(a, pa, b, pb, options);
+		r = SuperellipseInItsFrame(a, pa, b, pb, options);
 		r.iterations += spent;
 		if (!r.Ok())
 		{
-			const int spentMinMax = r.iterations;
-			r = SuperellipseInItsFrame(a, pa, b, pb, options);
-			r.iterations += spentMinMax;
+			const int spentFramed = r.iterations;
+			r = SolveCommonLevelMinMax(a, pa, b, pb, options);
+			r.iterations += spentFramed;
 		}
 		if (!r.Ok())
 		{

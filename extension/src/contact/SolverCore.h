@@ -296,11 +296,13 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
                                        const SolverOptions& options, const WarmStart* warm,
                                        SuperellipsePairPoint* at = nullptr, SuperellipseHandOver* handOver = nullptr);
 
-/// SolveSuperellipsePairLevel on the gauge ψ = log f (no contact's hand-over): a level of
-/// 1e-30 as well scaled as one of 1e-3, and a needle's term |x/a|² across it, flat at its axis
-/// in f, of slope 2/x in log f. Its multiplier at the answer is the same (fA = fB there).
-LevelResult SolveSuperellipsePairLogLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
-                                          const SolverOptions& options, const WarmStart* warm);
+/// SolveSuperellipsePairLevel for the level chain's fallbacks: no contact's hand-over, every
+/// step evaluated (the last one too, which the contact's solve takes to first order), and with
+/// `logLevels` on the gauge ψ = log f: a level of 1e-30 as well scaled as one of 1e-3, and a
+/// needle's term |x/a|² across it, flat at its axis in f, of slope 2/x in log f. Its multiplier
+/// at the answer is the same (fA = fB there).
+LevelResult SolveSuperellipsePairLevelChecked(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                                              const SolverOptions& options, const WarmStart* warm, bool logLevels);
 
 /// Whether FinishSuperellipseContact takes the pair: exponents ≥ 2 throughout, integer or real.
 bool FinishApplies(const SuperellipseShape& a, const SuperellipseShape& b);

@@ -34,7 +34,8 @@ struct PairInA
 	Rot r;
 	double q = 1.0, invQ = 1.0; // the gauge's power (PairFrame::power) and its inverse
 	bool integer = false;       // IntegerExponents for both shapes
-	bool log = false;           // the gauge ψ = log f instead (SolveSuperellipsePairLogLevel)
+	bool log = false;           // the gauge ψ = log f instead (SolveSuperellipsePairLevelChecked)
+	bool evaluatedExit = false; // the last step evaluated, not taken to first order (the same)
 };
 
 // ψ = f^{1/q}: ∇ψ = ψ'∇f, ∇²ψ = ψ'∇²f + ψ''∇f∇fᵀ with ψ' = ψ/(qf), ψ'' = ψ'(1/q − 1)/f (the
@@ -243,7 +244,8 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 bool Blocky(const PairInA& p) { return std::min(std::min(p.a.n, p.a.m), std::min(p.b.n, p.b.m)) >= 3.0; }
 
 // The pair seen from A (PairInA) for a solve.
-PairInA PairOf(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb, double size, bool log)
+PairInA PairOf(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb, double size, bool log,
+               bool evaluatedExit)
 {
 	PairInA p;
 	p.a = ScaledTerms(a.Terms(), size);
@@ -255,6 +257,7 @@ PairInA PairOf(const SuperellipseShape& a, const Pose& pa, const SuperellipseSha
 	p.invQ = 1.0 / p.q;
 	p.integer = IntegerExponents(p.a) && IntegerExponents(p.b);
 	p.log = log;
+	p.evaluatedExit = evaluatedExit;
 	return p;
 }
 
@@ -469,7 +472,7 @@ namespace
 {
 LevelResult Solve(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
                   const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at, SuperellipseHandOver* handOver,
-                  bool log)
+                  bool log, bool evaluatedExit)
 {
 	// The generic Newton (CommonLevelNewton.cpp: the same equations, gauge, trust region, line
 	// search and stopping rules) without what it pays for being generic: the shapes are evaluated
@@ -484,7 +487,7 @@ LevelResult Solve(const SuperellipseShape& a, const Pose& pa, const Superellipse
 	LevelResult result;
 	result.method = SolveMethod::newton;
 	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
-	const PairInA p = PairOf(a, pa, b, pb, size, log);
+	const PairInA p = PairOf(a, pa, b, pb, size, log, evaluatedExit);
 	Vec2 xi;
 	double mu = 1.0;
 	if (!StartOf(a, pa, b, pb, size, p, warm, xi, mu))
@@ -552,7 +555,15 @@ LevelResult Solve(const SuperellipseShape& a, const Pose& pa, const Superellipse
 		if (q.relativeSquared <= 1e-6 * 1e-6 && previousXi > 0.0 && previousXi <= 1e-2 && settled(stepXi, previousXi) &&
 		    settled(stepMu, previousMu))
 		{
-			TakeUnevaluatedStep(p, q, delta);
+			if (p.evaluatedExit)
+			{
+				// At a needle's tip the gradient turns over 1e-24 of the size: to first order
+				// its last step may leave the normals 1e-3 rad from where the point puts them.
+				EvaluateAt(p, *trial, q.xi + Vec2(delta[0], delta[1]), q.mu + delta[2]);
+				std::swap(current, trial);
+			}
+			else
+				TakeUnevaluatedStep(p, q, delta);
 			break;
 		}
 		// Trust region (the generic solver's): at most half the pair's size or of the distance
@@ -615,13 +626,13 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
                                        const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at,
                                        SuperellipseHandOver* handOver)
 {
-	return Solve(a, pa, b, pb, options, warm, at, handOver, false);
+	return Solve(a, pa, b, pb, options, warm, at, handOver, false, false);
 }
 
-LevelResult SolveSuperellipsePairLogLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
-                                          const SolverOptions& options, const WarmStart* warm)
+LevelResult SolveSuperellipsePairLevelChecked(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                                              const SolverOptions& options, const WarmStart* warm, bool logLevels)
 {
-	return Solve(a, pa, b, pb, options, warm, nullptr, nullptr, true);
+	return Solve(a, pa, b, pb, options, warm, nullptr, nullptr, logLevels, true);
 }
 
 } // namespace b2a
