@@ -294,7 +294,7 @@ struct Point
 	double relativeSquared; // NaN where anything evaluated was not finite
 };
 
-void EvaluateAt(const PairInA& p, Point& q, Vec2 xi, double mu)
+__attribute__((always_inline)) inline void EvaluateAt(const PairInA& p, Point& q, Vec2 xi, double mu)
 {
 	q.xi = xi;
 	q.mu = mu;
