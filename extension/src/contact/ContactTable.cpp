@@ -108,16 +108,6 @@ LevelResult NewtonAlone(const Shape& a, const Pose& pa, const Shape& b, const Po
 
 namespace
 {
-// Two smooth superellipses by Newton in one particle's body frame (SolveSuperellipsePairLevel),
-// in A's frame and then in B's: cold, or from `start` (a world point: a grid's candidate; in each
-// frame, LevelMatchedStart).
-// Needles crossing deep inside each other (common levels of 1e-30 to 1e-9, where a needle with
-// an exponent 2 across it has a level set 1e-15 of its size thick) are out of reach of the
-// generic solvers, which evaluate both shapes at world coordinates (rounded to 1e-16 of up to
-// 1e3 sizes), and in reach of a frame whose origin is the thin particle's centre: there its
-// coordinates are exact, and only the other particle's are rounded, against a level set that is
-// not thin. Which particle is the thin one the solve finds out: each frame's exit tests the
-// conditions to its own rounding.
 // A start in s's body frame from the world point X, for needles crossing deep inside each other.
 // Its coordinate across s's thinner level set at C = o's level there (the axis whose extent,
 // a·C^{1/n} or b·C^{1/m}, is the smaller) is set so that s's level is C too, on the side where
@@ -168,6 +158,15 @@ Vec2 LevelMatchedStart(const SuperellipseShape& s, const Pose& ps, const Superel
 	return x;
 }
 
+// Two smooth superellipses by Newton in one particle's body frame (SolveSuperellipsePairLevelChecked),
+// in A's frame and then in B's: cold, or from `start` (a world point: a grid's candidate; in each
+// frame, LevelMatchedStart). Needles crossing deep inside each other (common levels of 1e-30 to 1e-9, where a needle with
+// an exponent 2 across it has a level set 1e-15 of its size thick) are out of reach of the
+// generic solvers, which evaluate both shapes at world coordinates (rounded to 1e-16 of up to
+// 1e3 sizes), and in reach of a frame whose origin is the thin particle's centre: there its
+// coordinates are exact, and only the other particle's are rounded, against a level set that is
+// not thin. Which particle is the thin one the solve finds out: each frame's exit tests the
+// conditions to its own rounding.
 LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
                                    const Vec2* start = nullptr)
 {
