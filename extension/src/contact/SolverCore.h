@@ -105,10 +105,20 @@ inline ConditionsResidual ResidualOfConditions(double psiA, double psiB, Vec2 gr
 		return r;
 	const Vec2 na = gradA / la, nb = gradB / lb;
 	const Vec2 t = Perp(na);
+	const double curvatureA = std::fabs(Dot(t, hessA * t)) / la, curvatureB = std::fabs(Dot(t, hessB * t)) / lb;
 	r.level = std::fabs(psiA - psiB) / mean;
-	r.levelFloor = (la * deltaA + lb * deltaB) / mean + 4.0 * eps;
 	r.angle = Length(na + nb);
-	r.angleFloor = std::fabs(Dot(t, hessA * t)) / la * deltaA + std::fabs(Dot(t, hessB * t)) / lb * deltaB + 4.0 * eps;
+	// (One rounding for both: the floors as one product each, as they always were.)
+	if (deltaA == deltaB)
+	{
+		r.levelFloor = (la + lb) * deltaA / mean + 4.0 * eps;
+		r.angleFloor = (curvatureA + curvatureB) * deltaA + 4.0 * eps;
+	}
+	else
+	{
+		r.levelFloor = (la * deltaA + lb * deltaB) / mean + 4.0 * eps;
+		r.angleFloor = curvatureA * deltaA + curvatureB * deltaB + 4.0 * eps;
+	}
 	r.valid = std::isfinite(r.level + r.angle + r.levelFloor + r.angleFloor);
 	return r;
 }
