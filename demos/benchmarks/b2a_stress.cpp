@@ -84,6 +84,10 @@ const char* KindName(Kind k)
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// A normal off by more than this (radians) is wrong, and so is a level off by more than
+/// kWrongLevel of itself: the standard every converged answer in range is held to.
+constexpr double kWrongNormal = 1e-6, kWrongLevel = 1e-9;
+
 /// What the checks found for one library result.
 struct Check
 {
@@ -187,6 +191,23 @@ LD LevelCurveCurvature(const Posed& p, V X)
 	return std::fabs(ref::Dot(t, HessTimes(d, t))) / (g * g * g);
 }
 
+/// How far p's unit normal turns over the points within `radius` of X (the rounding of X): the
+/// largest angle from the normal at X to the normals at 8 points on that circle. Where X is
+/// within rounding of a needle's tip (a level set 1e-15 of its size thick, whose tip turns the
+/// normal over 1e-24 of it) this is ~π, though the level curve through X itself is flat.
+LD NormalSpread(const Posed& p, V X, LD radius)
+{
+	const V n = ref::Unit(WorldDeriv(p, X).grad);
+	LD spread = 0.0L;
+	for (int k = 0; k < 8; ++k)
+	{
+		const LD t = 0.25L * 3.14159265358979323846L * k;
+		const V Y{X.x + radius * std::cos(t), X.y + radius * std::sin(t)};
+		spread = std::max(spread, LD(Angle(n, ref::Unit(WorldDeriv(p, Y).grad))));
+	}
+	return spread;
+}
+
 /// At one heart's tip (A's or B's, not both), the other particle's level-curve curvature there
 /// (SetFloors); else 0.
 LD TipCurvature(const Config& c, const Posed& A, const Posed& B, V X)
@@ -251,7 +272,27 @@ Check CheckAnswer(const Config& c, const Answer& r, const Posed& A, const Posed&
 	k.point = k.estimate;
 	k.level = double(std::fabs(step.dL) / L);
 	const V na = ref::Unit(WorldDeriv(A, Xc).grad), nb = ref::Unit(WorldDeriv(B, Xc).grad);
-	const V expected = !contact ? na : (ref::Dot(na, nb) < 0.0L ? ref::Unit(na - nb) : V{-nb.x, -nb.y});
+	V expected = !contact ? na : (ref::Dot(na, nb) < 0.0L ? ref::Unit(na - nb) : V{-nb.x, -nb.y});
+	// At a solution A's normal is B's reversed. Where the rounding of the point (eps·reach, as
+	// SetFloors) turns one particle's normal beyond a tenth of the standard, that one at Xc says
+	// nothing of it at the solution (needles crossing deep inside each other: the point within
+	// rounding of a needle's tip), and the reference is the other particle's.
+	const LD rounding = std::numeric_limits<double>::epsilon() * std::max({ref::Len(Xc), ref::Len(A.pose.p), ref::Len(B.pose.p)});
+	const LD spreadA = NormalSpread(A, Xc, rounding), spreadB = NormalSpread(B, Xc, rounding);
+	if (problem == Problem::common && std::max(spreadA, spreadB) > 0.1L * kWrongNormal)
+	{
+		expected = spreadA <= spreadB ? na : V{-nb.x, -nb.y};
+		// And the level and point from Newton in the thinner particle's frame (PolishInThinFrame),
+		// where its level set, 1e-15 of its size thick at levels of 1e-30, is held exactly.
+		const bool supers = A.shape.kind == RefShape::Kind::superellipse && B.shape.kind == RefShape::Kind::superellipse;
+		const LevelSolution framed = supers ? PolishInThinFrame(A, B, X, L, c.size) : LevelSolution{};
+		if (framed.ok)
+		{
+			k.point = double(ref::Len(X - framed.point) / c.size);
+			k.level = double(std::fabs(L - framed.level) / framed.level);
+			expected = framed.normal;
+		}
+	}
 	k.normal = Angle(n, expected);
 	return k;
 }
@@ -401,10 +442,6 @@ const char* RangeName(Range r)
 	return names[int(r)];
 }
 
-/// A normal off by more than this (radians) is wrong, and so is a level off by more than
-/// kWrongLevel of itself: the standard every converged answer in range is held to.
-constexpr double kWrongNormal = 1e-6, kWrongLevel = 1e-9;
-
 /// Levels (in units of the own level) below this are "deep": needles crossing or overlapping deep
 /// inside each other, where the summary counts failures and wrong answers apart.
 constexpr double kDeepLevel = 1e-9;
@@ -527,6 +564,14 @@ void RunWarm(const Config& c, Outcome& o)
 		w.answer = Polish(A, B, Problem::common, previous.point, previous.level, c.size);
 		if (!w.answer.ok && w.contact.Ok())
 			w.answer = Polish(A, B, Problem::common, ref::FromVec(w.contact.point), w.contact.level, c.size);
+		// Needles crossing deep inside each other (below level 1e-9): in the thinner particle's
+		// frame (PolishInThinFrame), whose level set world coordinates may not hold.
+		if (w.answer.ok && w.answer.level < kDeepLevel)
+		{
+			const LevelSolution framed = PolishInThinFrame(A, B, w.answer.point, w.answer.level, c.size);
+			if (framed.ok)
+				w.answer = framed;
+		}
 		if (!w.answer.ok)
 		{
 			++o.warmUnchecked;

@@ -335,6 +335,60 @@ inline LevelSolution Polish(const Posed& A, const Posed& B, Problem problem, V X
 	return sol;
 }
 
+/// Polish of the common level in one particle's body frame (`inB`: B's, else A's), from X with
+/// that particle's coordinate across its thinner level set (the axis of smaller extent at the
+/// other's level C there, a·C^{1/n} or b·C^{1/m}) set so that its level is C too, on the side
+/// where the other's level falls; the answer in world terms. Needles crossing deep inside each
+/// other (levels 1e-30 to 1e-9) have level sets 1e-15 of their size thick, which long-double
+/// world coordinates of 1e3 sizes hold to a tenth, and a particle's own frame exactly.
+inline LevelSolution PolishInFrame(const Posed& A, const Posed& B, V X, LD L, LD size, bool inB)
+{
+	const RefPose f = (inB ? B : A).pose;
+	auto in = [&](const RefPose& q) { return RefPose{ref::ToBodyL(f, q.p), f.c * q.c + f.s * q.s, f.c * q.s - f.s * q.c}; };
+	const Posed A1{A.shape, in(A.pose)}, B1{B.shape, in(B.pose)};
+	const RefShape& s = (inB ? B : A).shape;
+	const Posed& other = inB ? A1 : B1;
+	V x = ref::ToBodyL(f, X);
+	const LD C = LevelAt(other, x);
+	const V g = WorldDeriv(other, x).grad;
+	if (s.kind == RefShape::Kind::superellipse && C > 0.0L && std::isfinite(C))
+	{
+		if (s.a * std::pow(C, 1.0L / s.n) <= s.b * std::pow(C, 1.0L / s.m))
+		{
+			const LD rest = C - std::pow(std::fabs(x.y) / s.b, s.m);
+			if (rest > 0.0L)
+				x.x = -std::copysign(s.a * std::pow(rest, 1.0L / s.n), g.x);
+		}
+		else
+		{
+			const LD rest = C - std::pow(std::fabs(x.x) / s.a, s.n);
+			if (rest > 0.0L)
+				x.y = -std::copysign(s.b * std::pow(rest, 1.0L / s.m), g.y);
+		}
+	}
+	// Polish's own test does not see a needle's tip, whose normal turns over 1e-24 of the size:
+	// solved here means the normals opposed to 1e-12 rad in the frame.
+	auto opposed = [&](V at) {
+		const V na = ref::Unit(WorldDeriv(A1, at).grad), nb = ref::Unit(WorldDeriv(B1, at).grad);
+		return std::atan2(std::fabs(ref::Cross(na, nb)), -ref::Dot(na, nb)) <= 1e-12L;
+	};
+	LevelSolution sol = Polish(A1, B1, Problem::common, x, L, size);
+	for (int k = 0; k < 30 && !(sol.ok && opposed(sol.point)) && std::isfinite(sol.level); ++k)
+		sol = Polish(A1, B1, Problem::common, sol.point, sol.level, size);
+	sol.ok = sol.ok && opposed(sol.point);
+	sol.point = ref::ToWorldL(f, sol.point);
+	sol.normal = ref::RotateL(f, sol.normal);
+	return sol;
+}
+
+/// PolishInFrame in the frame of the superellipse whose level set at L is the thinner (the
+/// smaller of a·L^{1/n}, b·L^{1/m}).
+inline LevelSolution PolishInThinFrame(const Posed& A, const Posed& B, V X, LD L, LD size)
+{
+	auto thin = [&](const RefShape& s) { return std::min(s.a * std::pow(L, 1.0L / s.n), s.b * std::pow(L, 1.0L / s.m)); };
+	return PolishInFrame(A, B, X, L, size, thin(B.shape) < thin(A.shape));
+}
+
 /// The solution of a one-sided scale (problem scaleA) at one heart's tip, A's or B's (not both),
 /// for the placements as given: a pair is built around a tip in long double and its centres are
 /// then rounded to double, which moves the tip by ~1e-16 of the centres' coordinates, and beside

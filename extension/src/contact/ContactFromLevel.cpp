@@ -258,8 +258,13 @@ namespace
 // B's surface point nearest A (pointOnB, the grid method): A leaves B fastest through that
 // point, so the normal is B's inward one there.
 // (`cornerA`, `cornerB`: whether X is a corner of A, of B; the caller has them.)
+// `solved`: a converged Newton's normal (A's unit gradient where it solved the conditions). Where
+// the two normals at X are more than 4e-3 rad apart it is the answer: a converged Newton's point
+// has them opposed in the frame it solved in, and only the rounding of X to world coordinates
+// parts them (needles crossing deep inside each other, the point within that rounding of a
+// needle's tip, solved in the needle's own frame: SolveSuperellipsePairLevel).
 Vec2 ContactNormal(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, Vec2 X, bool pointOnB,
-                   const Vec2* gradientA, bool cornerA, bool cornerB)
+                   const Vec2* gradientA, bool cornerA, bool cornerB, const Vec2* solved)
 {
 	const Vec2 xa = ToBody(pa, X), xb = ToBody(pb, X);
 	Vec2 na, nb;
@@ -278,7 +283,9 @@ Vec2 ContactNormal(const Shape& a, const Pose& pa, const Shape& b, const Pose& p
 	}
 	const bool hasA = LengthSquared(na) > 0.0, hasB = LengthSquared(nb) > 0.0;
 	Vec2 n;
-	if (hasA && hasB)
+	if (hasA && hasB && solved && LengthSquared(na + nb) > 4e-3 * 4e-3)
+		n = *solved;
+	else if (hasA && hasB)
 		n = Dot(na, nb) < 0.0 ? OpposedNormal(a, xa, na, b, xb, nb) : (pointOnB ? -nb : na);
 	else if (hasA)
 		n = na;
@@ -306,7 +313,8 @@ ContactResult ContactFromLevelGiven(const Shape& a, const Pose& pa, const Shape&
 	// search.
 	const bool cornerA = AtCorner(a, ToBody(pa, X)), cornerB = AtCorner(b, ToBody(pb, X));
 	c.normal = level.method == SolveMethod::ellipsePair ? level.normal
-	                                                    : ContactNormal(a, pa, b, pb, X, pointOnB, gradientA, cornerA, cornerB);
+	                                                    : ContactNormal(a, pa, b, pb, X, pointOnB, gradientA, cornerA, cornerB,
+	                                                                    level.method == SolveMethod::newton ? &level.normal : nullptr);
 	const Vec2 n = c.normal;
 
 	// The points: for a convex shape, where the line through X along n leaves A last (A's

@@ -23,7 +23,9 @@
 //           (L giving up on an overlapping pair → OverlapAxis).
 //  level chains: CircleLevel   closed form
 //                EllipseLevel  ellipse pair (Perram–Wertheim)  → NewtonLevel
-//                NewtonLevel   Newton from the warm start      → Newton cold → min–max → grid (polished)
+//                NewtonLevel   Newton from the warm start      → Newton cold → Newton in A's frame, then
+//                              B's (two superellipses) → min–max → grid (polished, else Newton in a
+//                              particle's frame from its point)
 //                GridLevel     the grid's fixed point (non-convex pairs are refused before the table)
 //  Explicit methods, for any pair: MethodChoice::newton: from Newton alone (level: Newton alone);
 //  MethodChoice::grid: Grid (level: GridLevel).
@@ -104,6 +106,134 @@ LevelResult NewtonAlone(const Shape& a, const Pose& pa, const Shape& b, const Po
 }
 } // namespace
 
+namespace
+{
+// A start in s's body frame from the world point X, for needles crossing deep inside each other.
+// Its coordinate across s's thinner level set at C = o's level there (the axis whose extent,
+// a·C^{1/n} or b·C^{1/m}, is the smaller) is set so that s's level is C too, on the side where
+// o's level falls: beside a needle with an exponent 2 across it, at a level of 1e-23, that
+// coordinate is 1e-14 of the size, and a point rounded in world coordinates (a grid's candidate)
+// has it at 1e-19 or 1e-22, on the needle's axis, where its level is flat across it and Newton
+// creeps. With `crossing`, X first moves along s's axis to where o's long axis crosses it: where
+// both level sets are needles, one's tip touches the other's flank there, and a grid's candidate
+// may be several of o's thicknesses (1e-10 of the size) away from it.
+Vec2 LevelMatchedStart(const SuperellipseShape& s, const Pose& ps, const SuperellipseShape& o, const Pose& po, Vec2 X, bool crossing)
+{
+	const Pose rel = Relative(ps, po); // o's centre and axes in s's frame
+	Vec2 x = ToBody(ps, X), g;
+	auto levelOfO = [&](Vec2 at) {
+		const Vec2 xo = InvRotate(rel.q, at - rel.p);
+		g = Rotate(rel.q, o.Gradient(xo));
+		return o.Level(xo);
+	};
+	auto thinX = [](const SuperellipseShape& k, double C) { return k.A() * std::pow(C, 1.0 / k.N()) <= k.B() * std::pow(C, 1.0 / k.M()); };
+	double C = levelOfO(x);
+	if (!(C > 0.0) || !std::isfinite(C) || !IsFinite(g))
+		return x;
+	if (crossing)
+	{
+		const Vec2 d = Rotate(rel.q, thinX(o, C) ? Vec2(0.0, 1.0) : Vec2(1.0, 0.0)); // o's long axis
+		const bool alongY = thinX(s, C);                                                 // s's long axis
+		const double t = alongY ? -rel.p.x / d.x : -rel.p.y / d.y;
+		const Vec2 at = alongY ? Vec2(0.0, rel.p.y + t * d.y) : Vec2(rel.p.x + t * d.x, 0.0);
+		if (!IsFinite(at))
+			return x;
+		x = at;
+		C = levelOfO(x);
+		if (!(C > 0.0) || !std::isfinite(C) || !IsFinite(g))
+			return x;
+	}
+	if (thinX(s, C))
+	{
+		const double rest = C - std::pow(std::fabs(x.y) / s.B(), s.M());
+		if (rest > 0.0)
+			x.x = -std::copysign(s.A() * std::pow(rest, 1.0 / s.N()), g.x);
+	}
+	else
+	{
+		const double rest = C - std::pow(std::fabs(x.x) / s.A(), s.N());
+		if (rest > 0.0)
+			x.y = -std::copysign(s.B() * std::pow(rest, 1.0 / s.M()), g.y);
+	}
+	return x;
+}
+
+// Two smooth superellipses by Newton in one particle's body frame (SolveSuperellipsePairLevelChecked),
+// in A's frame and then in B's: cold, or from `start` (a world point: a grid's candidate; in each
+// frame, LevelMatchedStart). Needles crossing deep inside each other (common levels of 1e-30 to 1e-9, where a needle with
+// an exponent 2 across it has a level set 1e-15 of its size thick) are out of reach of the
+// generic solvers, which evaluate both shapes at world coordinates (rounded to 1e-16 of up to
+// 1e3 sizes), and in reach of a frame whose origin is the thin particle's centre: there its
+// coordinates are exact, and only the other particle's are rounded, against a level set that is
+// not thin. Which particle is the thin one the solve finds out: each frame's exit tests the
+// conditions to its own rounding.
+LevelResult SuperellipseInItsFrame(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                                   const Vec2* start = nullptr)
+{
+	LevelResult r;
+	r.failure = "Newton in a particle's frame needs two smooth superellipses";
+	const SuperellipseShape* sa = AsSmoothSuperellipse(a);
+	const SuperellipseShape* sb = sa ? AsSmoothSuperellipse(b) : nullptr;
+	if (!sb)
+		return r;
+	// From a start: in each frame the level matched across the particle, then at the needles'
+	// crossing (LevelMatchedStart), on the levels' gauge and then on their logarithms.
+	WarmStart from; // the start in the solving particle's frame (μ balanced at its first step)
+	from.valid = true;
+	int spent = 0;
+	for (const bool inB : {false, true})
+		for (const bool log : {false, true})
+			for (const bool crossing : {false, true})
+			{
+				if (!start && (crossing || log))
+					continue;
+				if (start)
+					from.localPoint = inB ? LevelMatchedStart(*sb, pb, *sa, pa, *start, crossing)
+					                      : LevelMatchedStart(*sa, pa, *sb, pb, *start, crossing);
+				const WarmStart* w = start ? &from : nullptr;
+				const SuperellipseShape &s = inB ? *sb : *sa, &o = inB ? *sa : *sb;
+				const Pose &ps = inB ? pb : pa, &po = inB ? pa : pb;
+				r = SolveSuperellipsePairLevelChecked(s, ps, o, po, options, w, log);
+				spent += r.iterations;
+				r.iterations = spent;
+				if (r.Ok())
+				{
+					if (inB)
+					{
+						r.normal = -r.normal;
+						r.multiplier = 1.0 / r.multiplier;
+					}
+					return r;
+				}
+			}
+	return r;
+}
+
+// The grid's common level sampling B's level surface (or A's, `flipped`), held to the solvers'
+// standard (CheckGridCommonLevel); where its polish stops short, Newton in a particle's frame
+// from its candidate point (SuperellipseInItsFrame: needles crossing deep inside each other that
+// it does not solve cold). Answers for (A, B) either way.
+LevelResult GridLevelChecked(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
+                             bool flipped)
+{
+	const LevelResult grid = flipped ? SolveCommonLevelGrid(b, pb, a, pa, options) : SolveCommonLevelGrid(a, pa, b, pb, options);
+	LevelResult r = flipped ? CheckGridCommonLevel(b, pb, a, pa, options, grid) : CheckGridCommonLevel(a, pa, b, pb, options, grid);
+	if (r.Ok() && flipped)
+	{
+		r.normal = -r.normal;
+		r.multiplier = r.multiplier > 0.0 ? 1.0 / r.multiplier : 0.0;
+	}
+	if (r.Ok() || !grid.Ok())
+		return r;
+	LevelResult framed = SuperellipseInItsFrame(a, pa, b, pb, options, &grid.point);
+	r.iterations += framed.iterations;
+	if (!framed.Ok())
+		return r; // the grid's failure
+	framed.iterations = r.iterations; // (a Newton answer: its method stays newton)
+	return framed;
+}
+} // namespace
+
 LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
                              const WarmStart* warm, LevelSlide* slide)
 {
@@ -112,9 +242,18 @@ LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, con
 		r = SolveCommonLevelNewton(a, pa, b, pb, options, nullptr, slide);
 	if (!r.Ok())
 	{
+		// Two superellipses first in a particle's own frame, whose exit holds the answer to the
+		// standard wherever it is thin; the min–max and the grid, in world coordinates, may only
+		// meet it to their rounding (normals to 1e-4 rad) where a needle is thinner than that.
 		const int spent = r.iterations;
-		r = SolveCommonLevelMinMax(a, pa, b, pb, options);
+		r = SuperellipseInItsFrame(a, pa, b, pb, options);
 		r.iterations += spent;
+		if (!r.Ok())
+		{
+			const int spentFramed = r.iterations;
+			r = SolveCommonLevelMinMax(a, pa, b, pb, options);
+			r.iterations += spentFramed;
+		}
 		if (!r.Ok())
 		{
 			// Min–max that stops short of the standard says so; the grid, which needs neither
@@ -122,7 +261,7 @@ LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, con
 			// standard (its samples and bracket stop at their own tolerances: needles crossing
 			// deep inside each other were answered 0.5 off in level, 3 rad in normal).
 			const int spentBoth = r.iterations;
-			r = CheckGridCommonLevel(a, pa, b, pb, options, SolveCommonLevelGrid(a, pa, b, pb, options));
+			r = GridLevelChecked(a, pa, b, pb, options, false);
 			if (!r.Ok())
 			{
 				// The grid samples B's level-C surface; where the minimum of λA over it is a
@@ -130,14 +269,9 @@ LevelResult NewtonLevelChain(const Shape& a, const Pose& pa, const Shape& b, con
 				// B's of 1e5, far apart: C ~ 1e24), A's samples find it, as the contact's grid
 				// tries both sides (GridContact).
 				const int spentOne = r.iterations;
-				LevelResult other = CheckGridCommonLevel(b, pb, a, pa, options, SolveCommonLevelGrid(b, pb, a, pa, options));
+				LevelResult other = GridLevelChecked(a, pa, b, pb, options, true);
 				other.iterations += spentOne;
-				if (other.Ok())
-				{
-					other.normal = -other.normal;
-					other.multiplier = other.multiplier > 0.0 ? 1.0 / other.multiplier : 0.0;
-				}
-				else
+				if (!other.Ok())
 					other.failure = r.failure;
 				r = other;
 			}

@@ -91,8 +91,11 @@ struct ConditionsResidual
 		       angle <= std::max(angleTolerance, std::min(10.0 * angleFloor, 1e-4));
 	}
 };
+/// With each particle's point known to its own rounding: `deltaA` for A's, `deltaB` for B's (a
+/// solver in A's body frame evaluates A at its exact coordinates, B at coordinates rounded
+/// against B's centre).
 inline ConditionsResidual ResidualOfConditions(double psiA, double psiB, Vec2 gradA, Vec2 gradB, const Sym22& hessA,
-                                               const Sym22& hessB, double delta)
+                                               const Sym22& hessB, double deltaA, double deltaB)
 {
 	ConditionsResidual r;
 	const double eps = std::numeric_limits<double>::epsilon();
@@ -102,13 +105,27 @@ inline ConditionsResidual ResidualOfConditions(double psiA, double psiB, Vec2 gr
 		return r;
 	const Vec2 na = gradA / la, nb = gradB / lb;
 	const Vec2 t = Perp(na);
-	const double curvature = std::fabs(Dot(t, hessA * t)) / la + std::fabs(Dot(t, hessB * t)) / lb;
+	const double curvatureA = std::fabs(Dot(t, hessA * t)) / la, curvatureB = std::fabs(Dot(t, hessB * t)) / lb;
 	r.level = std::fabs(psiA - psiB) / mean;
-	r.levelFloor = (la + lb) * delta / mean + 4.0 * eps;
 	r.angle = Length(na + nb);
-	r.angleFloor = curvature * delta + 4.0 * eps;
+	// (One rounding for both: the floors as one product each, as they always were.)
+	if (deltaA == deltaB)
+	{
+		r.levelFloor = (la + lb) * deltaA / mean + 4.0 * eps;
+		r.angleFloor = (curvatureA + curvatureB) * deltaA + 4.0 * eps;
+	}
+	else
+	{
+		r.levelFloor = (la * deltaA + lb * deltaB) / mean + 4.0 * eps;
+		r.angleFloor = curvatureA * deltaA + curvatureB * deltaB + 4.0 * eps;
+	}
 	r.valid = std::isfinite(r.level + r.angle + r.levelFloor + r.angleFloor);
 	return r;
+}
+inline ConditionsResidual ResidualOfConditions(double psiA, double psiB, Vec2 gradA, Vec2 gradB, const Sym22& hessA,
+                                               const Sym22& hessB, double delta)
+{
+	return ResidualOfConditions(psiA, psiB, gradA, gradB, hessA, hessB, delta, delta);
 }
 
 /// Whether a point solves the common-level conditions to what double precision allows
@@ -131,13 +148,19 @@ inline bool ConditionsHold(double psiA, double psiB, Vec2 gradA, Vec2 gradB, con
 /// agreement in double shows nothing (needles crossing deep inside each other, at levels of
 /// 1e-18: a floor of 1e3 rad and more, with the true normals 0.04 to 2.4 rad apart), and a
 /// point that passes ConditionsHold is still no verified solution.
-inline bool RoundingKeepsNormals(Vec2 gradA, Vec2 gradB, const Sym22& hessA, const Sym22& hessB, double deltaSquared)
+inline bool RoundingKeepsNormals(Vec2 gradA, Vec2 gradB, const Sym22& hessA, const Sym22& hessB, double deltaSquaredA,
+                                 double deltaSquaredB)
 {
 	const Vec2 u = Perp(gradA); // the tangent, |∇ψA| long
 	const double a2 = LengthSquared(gradA), b2 = LengthSquared(gradB);
 	const double ta = Dot(u, hessA * u), tb = Dot(u, hessB * u); // |∇ψA|² tᵀHt
 	const double half = 0.25 * 1e-2 * 1e-2;                     // (1e-2 / 2)²
-	return ta * ta * deltaSquared <= half * a2 * a2 * a2 && tb * tb * deltaSquared <= half * a2 * a2 * b2;
+	return ta * ta * deltaSquaredA <= half * a2 * a2 * a2 && tb * tb * deltaSquaredB <= half * a2 * a2 * b2;
+}
+/// The same with one rounding for both particles' points.
+inline bool RoundingKeepsNormals(Vec2 gradA, Vec2 gradB, const Sym22& hessA, const Sym22& hessB, double deltaSquared)
+{
+	return RoundingKeepsNormals(gradA, gradB, hessA, hessB, deltaSquared, deltaSquared);
 }
 
 /// The largest absolute row sum of a symmetric 2×2 matrix (a bound on its eigenvalues).
@@ -282,6 +305,14 @@ struct SuperellipseHandOver
 LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
                                        const SolverOptions& options, const WarmStart* warm,
                                        SuperellipsePairPoint* at = nullptr, SuperellipseHandOver* handOver = nullptr);
+
+/// SolveSuperellipsePairLevel for the level chain's fallbacks: no contact's hand-over, every
+/// step evaluated (the last one too, which the contact's solve takes to first order), and with
+/// `logLevels` on the gauge ψ = log f: a level of 1e-30 as well scaled as one of 1e-3, and a
+/// needle's term |x/a|² across it, flat at its axis in f, of slope 2/x in log f. Its multiplier
+/// at the answer is the same (fA = fB there).
+LevelResult SolveSuperellipsePairLevelChecked(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                                              const SolverOptions& options, const WarmStart* warm, bool logLevels);
 
 /// Whether FinishSuperellipseContact takes the pair: exponents ≥ 2 throughout, integer or real.
 bool FinishApplies(const SuperellipseShape& a, const SuperellipseShape& b);

@@ -34,6 +34,8 @@ struct PairInA
 	Rot r;
 	double q = 1.0, invQ = 1.0; // the gauge's power (PairFrame::power) and its inverse
 	bool integer = false;       // IntegerExponents for both shapes
+	bool log = false;           // the gauge ψ = log f instead (SolveSuperellipsePairLevelChecked)
+	bool evaluatedExit = false; // the last step evaluated, not taken to first order (the same)
 };
 
 // ψ = f^{1/q}: ∇ψ = ψ'∇f, ∇²ψ = ψ'∇²f + ψ''∇f∇fᵀ with ψ' = ψ/(qf), ψ'' = ψ'(1/q − 1)/f (the
@@ -44,6 +46,18 @@ inline void ToGauge(const PairInA& p, double f, double fx, double fy, double hxx
 	g.lambda = f;
 	g.fx = fx;
 	g.fy = fy;
+	if (p.log)
+	{
+		// ψ = log f: ∇ψ = ∇f/f, ∇²ψ = ∇²f/f − ∇f∇fᵀ/f² (log 0 = −∞: the residual turns NaN).
+		const double inv = 1.0 / f;
+		g.psi = std::log(f);
+		g.gx = inv * fx;
+		g.gy = inv * fy;
+		g.hxx = inv * hxx - g.gx * g.gx;
+		g.hxy = inv * hxy - g.gx * g.gy;
+		g.hyy = inv * hyy - g.gy * g.gy;
+		return;
+	}
 	if (p.q == 1.0)
 	{
 		g.psi = f;
@@ -93,13 +107,18 @@ inline void Evaluate(const PairInA& p, Vec2 xi, Gauge& ga, Gauge& gb)
 // thresholds below are the generic solver's, squared). The square root would be on every
 // evaluation for nothing but these comparisons.
 // A NaN anywhere in the gauges' values or gradients makes it NaN.
-inline double Residual(const Gauge& ga, const Gauge& gb, double mu, double r[3])
+inline double LevelScale(const PairInA& p, const Gauge& ga, const Gauge& gb)
+{
+	// ψA − ψB relative to the gauges, or for ψ = log f as it is (a relative difference of f).
+	return p.log ? 1.0 : ga.psi * ga.psi + gb.psi * gb.psi + 1e-300;
+}
+inline double Residual(const PairInA& p, const Gauge& ga, const Gauge& gb, double mu, double r[3])
 {
 	r[0] = ga.gx + mu * gb.gx;
 	r[1] = ga.gy + mu * gb.gy;
 	r[2] = ga.psi - gb.psi;
 	const double gradScale = ga.gx * ga.gx + ga.gy * ga.gy + mu * mu * (gb.gx * gb.gx + gb.gy * gb.gy) + 1e-300;
-	const double levelScale = ga.psi * ga.psi + gb.psi * gb.psi + 1e-300;
+	const double levelScale = LevelScale(p, ga, gb);
 	return (r[0] * r[0] + r[1] * r[1]) / gradScale + r[2] * r[2] / levelScale;
 }
 
@@ -225,7 +244,8 @@ bool BoxStart(const SuperellipseShape& a, const SuperellipseShape& b, double siz
 bool Blocky(const PairInA& p) { return std::min(std::min(p.a.n, p.a.m), std::min(p.b.n, p.b.m)) >= 3.0; }
 
 // The pair seen from A (PairInA) for a solve.
-PairInA PairOf(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb, double size)
+PairInA PairOf(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb, double size, bool log,
+               bool evaluatedExit)
 {
 	PairInA p;
 	p.a = ScaledTerms(a.Terms(), size);
@@ -236,6 +256,8 @@ PairInA PairOf(const SuperellipseShape& a, const Pose& pa, const SuperellipseSha
 	p.q = std::min(a.LevelPower(), b.LevelPower());
 	p.invQ = 1.0 / p.q;
 	p.integer = IntegerExponents(p.a) && IntegerExponents(p.b);
+	p.log = log;
+	p.evaluatedExit = evaluatedExit;
 	return p;
 }
 
@@ -272,12 +294,12 @@ struct Point
 	double relativeSquared; // NaN where anything evaluated was not finite
 };
 
-void EvaluateAt(const PairInA& p, Point& q, Vec2 xi, double mu)
+__attribute__((always_inline)) inline void EvaluateAt(const PairInA& p, Point& q, Vec2 xi, double mu)
 {
 	q.xi = xi;
 	q.mu = mu;
 	Evaluate(p, xi, q.A, q.B);
-	q.relativeSquared = Residual(q.A, q.B, mu, q.r);
+	q.relativeSquared = Residual(p, q.A, q.B, mu, q.r);
 }
 
 // A cold start's point, with μ balancing the gradients there, |∇ψA|/|∇ψB| (GeometricStart's).
@@ -288,7 +310,7 @@ void EvaluateColdStart(const PairInA& p, Point& q, Vec2 xi)
 	const double ga = std::sqrt(q.A.gx * q.A.gx + q.A.gy * q.A.gy);
 	const double gb = std::sqrt(q.B.gx * q.B.gx + q.B.gy * q.B.gy);
 	q.mu = ga > 0.0 && gb > 0.0 && std::isfinite(ga / gb) ? ga / gb : 1.0;
-	q.relativeSquared = Residual(q.A, q.B, q.mu, q.r);
+	q.relativeSquared = Residual(p, q.A, q.B, q.mu, q.r);
 }
 
 // The least-squares multiplier for a warm start's point, μ = −∇ψA·∇ψB / |∇ψB|², where it lowers
@@ -296,14 +318,14 @@ void EvaluateColdStart(const PairInA& p, Point& q, Vec2 xi)
 // does. With c = −cos∠(∇ψA, ∇ψB) ∈ (0, 1] (μ > 0 needs it), the gradient part of the relative
 // residual is (1 − c²)/(1 + c²) at the least-squares μ and 1 − c at |∇ψA|/|∇ψB|, and
 // (1 + c)/(1 + c²) ≥ 1; the level part does not depend on μ.
-void TakeLeastSquaresMultiplier(Point& q)
+void TakeLeastSquaresMultiplier(const PairInA& p, Point& q)
 {
 	const double gb2 = q.B.gx * q.B.gx + q.B.gy * q.B.gy;
 	const double muLs = gb2 > 0.0 ? -(q.A.gx * q.B.gx + q.A.gy * q.B.gy) / gb2 : 0.0;
 	if (muLs > 0.0 && std::isfinite(muLs) && muLs != q.mu)
 	{
 		double r[3];
-		const double relativeSquared = Residual(q.A, q.B, muLs, r);
+		const double relativeSquared = Residual(p, q.A, q.B, muLs, r);
 		if (relativeSquared < q.relativeSquared)
 		{
 			q.mu = muLs;
@@ -325,7 +347,13 @@ void TakeUnevaluatedStep(const PairInA& p, Point& q, const double delta[3])
 		const double dpsi = g->gx * dx + g->gy * dy;
 		g->gx += g->hxx * dx + g->hxy * dy;
 		g->gy += g->hxy * dx + g->hyy * dy;
-		if (g->psi > 0.0)
+		if (p.log)
+		{
+			g->lambda += g->lambda * dpsi; // dλ = λ·dψ
+			g->fx = g->lambda * g->gx;
+			g->fy = g->lambda * g->gy;
+		}
+		else if (g->psi > 0.0)
 		{
 			g->lambda += p.q * g->lambda * dpsi / g->psi;
 			const double k = p.q * g->lambda / (g->psi + dpsi);
@@ -341,7 +369,7 @@ void TakeUnevaluatedStep(const PairInA& p, Point& q, const double delta[3])
 bool LineSearch(const PairInA& p, const Point& q, const double delta[3], Point& trial, double& alpha)
 {
 	const double w12 = 1.0 / (q.A.gx * q.A.gx + q.A.gy * q.A.gy + q.mu * q.mu * (q.B.gx * q.B.gx + q.B.gy * q.B.gy) + 1e-300);
-	const double w3 = 1.0 / (q.A.psi * q.A.psi + q.B.psi * q.B.psi + 1e-300);
+	const double w3 = 1.0 / LevelScale(p, q.A, q.B);
 	auto merit = [&](const Point& t) { return w12 * (t.r[0] * t.r[0] + t.r[1] * t.r[1]) + w3 * t.r[2] * t.r[2]; };
 	const double merit0 = merit(q);
 	const int halvings = q.relativeSquared < 1e-9 * 1e-9 ? 3 : 40;
@@ -355,29 +383,41 @@ bool LineSearch(const PairInA& p, const Point& q, const double delta[3], Point& 
 	return false;
 }
 
-// How far an evaluated point is from solving the conditions (ResidualOfConditions): B's body
-// coordinates there, ξ − c turned, are rounded to a part in 1e16 of the larger of |ξ| and |c|,
-// and c itself to a part in 1e16 of the centres' world coordinates.
-ConditionsResidual ResidualAt(const PairInA& p, const Point& q, const Pose& pa, const Pose& pb, double size)
+// How far an evaluated point is from solving the conditions (ResidualOfConditions). A is
+// evaluated at ξ itself, in its own body frame, each axis apart (its terms |ξx/a|^n and
+// |ξy/b|^m and their derivatives to a few parts in 1e16 of themselves, whatever the size of ξ):
+// its floors are those few parts alone. B's body coordinates there, ξ − c turned, are rounded to
+// a part in 1e16 of the larger of |ξ| and |c| (c itself, the centres' difference, is the input's,
+// as the reference takes it). The world coordinates do not enter: a needle crossing another deep
+// inside it at a level of 1e-30 has a level set 1e-15 of its size thick, which world
+// coordinates of 1e3 sizes cannot hold and A's frame does.
+double RoundingOfB(const PairInA& p, const Point& q)
 {
-	const double worldReach = std::max(Length(pa.p), Length(pb.p)) / size;
-	const double delta = std::numeric_limits<double>::epsilon() * std::max({Length(q.xi), Length(p.c), worldReach});
-	return ResidualOfConditions(q.A.psi, q.B.psi, Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), Sym22{q.A.hxx, q.A.hxy, q.A.hyy},
-	                            Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, delta);
+	return std::numeric_limits<double>::epsilon() * std::max(Length(q.xi), Length(p.c));
+}
+// With ψ = log f the levels f themselves, with ∇f = f∇ψ and f∇²ψ (whose curvatures across the
+// gradient, tᵀ∇²t/|∇|, are the gauge's).
+ConditionsResidual ResidualAt(const PairInA& p, const Point& q)
+{
+	const double ka = p.log ? q.A.lambda : 1.0, kb = p.log ? q.B.lambda : 1.0;
+	return ResidualOfConditions(p.log ? ka : q.A.psi, p.log ? kb : q.B.psi, ka * Vec2(q.A.gx, q.A.gy), kb * Vec2(q.B.gx, q.B.gy),
+	                            ka * Sym22{q.A.hxx, q.A.hxy, q.A.hyy}, kb * Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, 0.0,
+	                            RoundingOfB(p, q));
 }
 
 // Whether an evaluated point solves the conditions to what double precision allows
 // (ConditionsHold's standard).
-bool Solved(const PairInA& p, const Point& q, const Pose& pa, const Pose& pb, double size)
+bool Solved(const PairInA& p, const Point& q)
 {
-	if (ConditionsWithin(q.A.psi, q.B.psi, Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), 1e-11, 1e-11))
+	const double levelA = p.log ? q.A.lambda : q.A.psi, levelB = p.log ? q.B.lambda : q.B.psi;
+	if (ConditionsWithin(levelA, levelB, Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), 1e-11, 1e-11))
 		return true; // (the common case, before the roots of the reach)
-	return ResidualAt(p, q, pa, pb, size).Within(1e-11, 1e-10, p.q);
+	return ResidualAt(p, q).Within(1e-11, 1e-10, p.log ? 1.0 : p.q);
 }
 
 // The answer at the solved point q (opposed gradients and a positive multiplier, else the
 // failure), and what the contact needs from it in `at`.
-LevelResult Answer(const PairInA& p, const Pose& pa, const Pose& pb, double size, const Point& q, const WarmStart* warm,
+LevelResult Answer(const PairInA& p, const Pose& pa, double size, const Point& q, const WarmStart* warm,
                    SuperellipsePairPoint* at, LevelResult result)
 {
 	const Vec2 nA = Normalize(Vec2(q.A.gx, q.A.gy)), nB = Normalize(Vec2(q.B.gx, q.B.gy));
@@ -390,14 +430,13 @@ LevelResult Answer(const PairInA& p, const Pose& pa, const Pose& pb, double size
 	// taken unevaluated, a singular Jacobian at rounding level) promises a solution only where
 	// the conditions hold at the point (Solved): deep inside each other, needles' gauges agree to
 	// 1e-11 while their normals are 0.01 to 2 rad apart, and the contact's normal is their mean.
-	// There the double point's rounding alone turns the normals by 1e3 rad or more
-	// (RoundingKeepsNormals), and agreement in double says nothing.
-	const double reach2 = std::max(LengthSquared(pa.p), LengthSquared(pb.p)) / (size * size);
-	const double eps = std::numeric_limits<double>::epsilon();
-	if (!Solved(p, q, pa, pb, size) ||
+	// There the point's rounding alone turns the normals by 1e3 rad or more (RoundingKeepsNormals,
+	// with A's point exact in its frame and B's rounded as ResidualAt says), and agreement in
+	// double says nothing.
+	const double roundingB = RoundingOfB(p, q);
+	if (!Solved(p, q) ||
 	    !RoundingKeepsNormals(Vec2(q.A.gx, q.A.gy), Vec2(q.B.gx, q.B.gy), Sym22{q.A.hxx, q.A.hxy, q.A.hyy},
-	                          Sym22{q.B.hxx, q.B.hxy, q.B.hyy},
-	                          eps * eps * std::max({LengthSquared(q.xi), LengthSquared(p.c), reach2})))
+	                          Sym22{q.B.hxx, q.B.hxy, q.B.hyy}, 0.0, roundingB * roundingB))
 	{
 		result.failure = "stopped short of a solution (its levels or normals disagree beyond rounding)";
 		return result;
@@ -429,9 +468,11 @@ LevelResult Answer(const PairInA& p, const Pose& pa, const Pose& pb, double size
 }
 } // namespace
 
-LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
-                                       const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at,
-                                       SuperellipseHandOver* handOver)
+namespace
+{
+LevelResult Solve(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                  const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at, SuperellipseHandOver* handOver,
+                  bool log, bool evaluatedExit)
 {
 	// The generic Newton (CommonLevelNewton.cpp: the same equations, gauge, trust region, line
 	// search and stopping rules) without what it pays for being generic: the shapes are evaluated
@@ -446,7 +487,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 	LevelResult result;
 	result.method = SolveMethod::newton;
 	const double size = 0.5 * (a.BoundingRadius() + b.BoundingRadius());
-	const PairInA p = PairOf(a, pa, b, pb, size);
+	const PairInA p = PairOf(a, pa, b, pb, size, log, evaluatedExit);
 	Vec2 xi;
 	double mu = 1.0;
 	if (!StartOf(a, pa, b, pb, size, p, warm, xi, mu))
@@ -477,16 +518,20 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 			return result;
 		}
 		if (it == 1 && !cold)
-			TakeLeastSquaresMultiplier(q);
+			TakeLeastSquaresMultiplier(p, q);
 		// Jacobian of (∇ψA + μ∇ψB, ψA − ψB) with respect to (ξ, μ): [[H, ∇ψB], [(∇ψA − ∇ψB)ᵀ, 0]]
 		// with H = ∇²ψA + μ∇²ψB. (A Hessian that is not finite makes it singular to the solve.)
 		const double hxx = q.A.hxx + q.mu * q.B.hxx, hxy = q.A.hxy + q.mu * q.B.hxy, hyy = q.A.hyy + q.mu * q.B.hyy;
 		const double minusR[3] = {-q.r[0], -q.r[1], -q.r[2]};
 		const double dx = q.A.gx - q.B.gx, dy = q.A.gy - q.B.gy;
 		const Solve3Result step = SolveBordered(hxx, hxy, hyy, q.B.gx, q.B.gy, dx, dy, minusR);
-		if (!BorderedStepUsable(step.rcond, hxx, hxy, hyy, q.B.gx, q.B.gy, dx, dy))
+		// (On log f, whose gradients' units differ by the needles' thicknesses, 1e-14 to 1e3 at
+		// levels of 1e-23, J's condition number is ~1e-38 where the step is right: any finite
+		// step goes to the line search, which holds it to lowering the residual.)
+		const bool finiteStep = p.log && step.rcond > 0.0 && std::isfinite(step.x[0] + step.x[1] + step.x[2]);
+		if (!finiteStep && !BorderedStepUsable(step.rcond, hxx, hxy, hyy, q.B.gx, q.B.gy, dx, dy))
 		{
-			if (q.relativeSquared < 1e-11 * 1e-11 || Solved(p, q, pa, pb, size))
+			if (q.relativeSquared < 1e-11 * 1e-11 || Solved(p, q))
 				break; // solved: the Jacobian is singular only at the answer's rounding level
 			result.failure = "singular or ill-conditioned Jacobian";
 			return result;
@@ -510,7 +555,15 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		if (q.relativeSquared <= 1e-6 * 1e-6 && previousXi > 0.0 && previousXi <= 1e-2 && settled(stepXi, previousXi) &&
 		    settled(stepMu, previousMu))
 		{
-			TakeUnevaluatedStep(p, q, delta);
+			if (p.evaluatedExit)
+			{
+				// At a needle's tip the gradient turns over 1e-24 of the size: to first order
+				// its last step may leave the normals 1e-3 rad from where the point puts them.
+				EvaluateAt(p, *trial, q.xi + Vec2(delta[0], delta[1]), q.mu + delta[2]);
+				std::swap(current, trial);
+			}
+			else
+				TakeUnevaluatedStep(p, q, delta);
 			break;
 		}
 		// Trust region (the generic solver's): at most half the pair's size or of the distance
@@ -538,10 +591,10 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		double alpha = 1.0;
 		if (!LineSearch(p, q, delta, *trial, alpha))
 		{
-			if (Solved(p, q, pa, pb, size))
+			if (Solved(p, q))
 				break; // rounding floor
 			// Near the solution the full step, as the generic solver takes it.
-			if (!(forced < 2 && ResidualAt(p, q, pa, pb, size).Within(1e-4, 1e-4, p.q)))
+			if (!(forced < 2 && ResidualAt(p, q).Within(1e-4, 1e-4, p.q)))
 			{
 				result.failure = "line search stalled (no step lowers the residual)";
 				return result;
@@ -554,7 +607,7 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 		std::swap(current, trial);
 		const bool full = limit == 1.0 && alpha == 1.0;
 		// A step below the tolerance ends the solve only at a solution (the generic solver's rule).
-		if ((full && moved <= options.stepTolerance && Solved(p, *current, pa, pb, size)) ||
+		if ((full && moved <= options.stepTolerance && Solved(p, *current)) ||
 		    current->relativeSquared < 1e-15 * 1e-15)
 			break;
 		previousXi = full ? stepXi : 0.0;
@@ -565,7 +618,21 @@ LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& p
 			return result;
 		}
 	}
-	return Answer(p, pa, pb, size, *current, warm, at, result);
+	return Answer(p, pa, size, *current, warm, at, result);
+}
+} // namespace
+
+LevelResult SolveSuperellipsePairLevel(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                                       const SolverOptions& options, const WarmStart* warm, SuperellipsePairPoint* at,
+                                       SuperellipseHandOver* handOver)
+{
+	return Solve(a, pa, b, pb, options, warm, at, handOver, false, false);
+}
+
+LevelResult SolveSuperellipsePairLevelChecked(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb,
+                                              const SolverOptions& options, const WarmStart* warm, bool logLevels)
+{
+	return Solve(a, pa, b, pb, options, warm, nullptr, nullptr, logLevels, true);
 }
 
 } // namespace b2a
