@@ -1,7 +1,7 @@
 // b2analytic tests: a touching contact keeps touching across a gap of up to kContactHoldGap
 // (AnalyticFixture.h), so that a grazing contact jittering about zero separation does not wake
-// its bodies at every step, and one with a side that is not convex across kNonConvexHoldGap; a
-// contact that did not touch starts at separation zero.
+// its bodies at every step, and one between two hearts across kNonConvexHoldGap; a contact that
+// did not touch starts at separation zero.
 #include "SceneSupport.h"
 
 #include <doctest/doctest.h>
@@ -146,4 +146,27 @@ TEST_CASE("a contact between hearts keeps touching across a gap up to kNonConvex
 	p = StepAt(world, b, 0.5 * hold, 2.0 * width);
 	CHECK_FALSE(p.touching);
 	CHECK(p.points == 0);
+}
+
+TEST_CASE("a contact between a heart and a convex particle keeps the convex pairs' hold gap")
+{
+	// A circle of radius 0.4 beside an upright heart's widest point: held across kContactHoldGap
+	// alone, as between two convex particles.
+	b2World world(b2Vec2(0.0f, 0.0f));
+	const ShapePtr heart = MakeHeart(0.2);
+	const double touch = heart->SupportValue(Vec2(1.0, 0.0)) + 0.4;
+	b2Body* a = MakeParticle(world, heart, 0.0f, 0.0f);
+	b2Body* b = MakeParticle(world, MakeCircle(0.4), float(touch + 0.1), 0.0f);
+	a->SetType(b2_staticBody);
+	// The circle's centre level with the heart's widest point: the gap is the offset past it.
+	const double y = heart->Support(Vec2(1.0, 0.0)).y;
+	a->SetTransform(b2Vec2(0.0f, float(-y)), 0.0f);
+	Probe p = StepAt(world, b, -1e-3, touch);
+	CHECK(p.touching);
+	REQUIRE(p.points == 1);
+	CHECK(std::fabs(p.separation - -1e-3) < 2e-5);
+	p = StepAt(world, b, 0.5 * kContactHoldGap, touch);
+	CHECK(p.touching);
+	p = StepAt(world, b, 4.0 * kContactHoldGap, touch);
+	CHECK_FALSE(p.touching);
 }

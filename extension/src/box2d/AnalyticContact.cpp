@@ -151,7 +151,11 @@ AnalyticContact::AnalyticContact(b2Fixture* a, int32 indexA, b2Fixture* b, int32
 	};
 	m_sideA = side(pa);
 	m_sideB = side(pb);
-	m_nonConvex = (m_sideA.shape && !m_sideA.shape->IsConvex()) || (m_sideB.shape && !m_sideB.shape->IsConvex());
+	// Hearts against hearts or plain Box2D shapes hold across kNonConvexHoldGap; against a convex
+	// particle (a Box2D circle included) across kContactHoldGap.
+	auto convex = [](const Side& s) { return s.shape && s.shape->IsConvex(); };
+	auto nonConvex = [](const Side& s) { return s.shape && !s.shape->IsConvex(); };
+	m_nonConvex = (nonConvex(m_sideA) || nonConvex(m_sideB)) && !convex(m_sideA) && !convex(m_sideB) && kind != Kind::polygonCircle;
 	if (pa && pb)
 	{
 		m_patchTolerance = std::min(pa->Data().patchTolerance, pb->Data().patchTolerance);
@@ -404,8 +408,8 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	// level), and Box2D, which measures separations from the points, sees the true, positive
 	// gap: a face lifted by a fraction of a millimetre keeps its two points, as it would touching.
 	// Box2D's velocity solver holds such a point at no approach and its position solver leaves
-	// it alone (kContactHoldGap, AnalyticFixture.h, says why the contact is held; a contact with
-	// a side that is not convex holds across kNonConvexHoldGap).
+	// it alone (kContactHoldGap, AnalyticFixture.h, says why the contact is held; m_nonConvex
+	// contacts hold across kNonConvexHoldGap).
 	double held = 0.0;
 	if (IsTouching())
 	{
