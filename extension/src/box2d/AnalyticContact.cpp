@@ -151,6 +151,11 @@ AnalyticContact::AnalyticContact(b2Fixture* a, int32 indexA, b2Fixture* b, int32
 	};
 	m_sideA = side(pa);
 	m_sideB = side(pb);
+	// Hearts against hearts or plain Box2D shapes hold across kNonConvexHoldGap; against a convex
+	// particle (a Box2D circle included) across kContactHoldGap.
+	auto convex = [](const Side& s) { return s.shape && s.shape->IsConvex(); };
+	auto nonConvex = [](const Side& s) { return s.shape && !s.shape->IsConvex(); };
+	m_nonConvex = (nonConvex(m_sideA) || nonConvex(m_sideB)) && !convex(m_sideA) && !convex(m_sideB) && kind != Kind::polygonCircle;
 	if (pa && pb)
 	{
 		m_patchTolerance = std::min(pa->Data().patchTolerance, pb->Data().patchTolerance);
@@ -274,7 +279,8 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		// overlap for many pairs whose particles are apart (elongated ones especially).
 		const Shape& shapeA = *pa.shape;
 		const Shape& shapeB = *pb.shape;
-		const double reach = pa.radius + pb.radius + (IsTouching() ? kContactHoldGap : 0.0);
+		const double hold = m_nonConvex ? kNonConvexHoldGap : kContactHoldGap;
+		const double reach = pa.radius + pb.radius + (IsTouching() ? hold : 0.0);
 		const Vec2 between = poseB.p - poseA.p;
 		if (LengthSquared(between) > reach * reach)
 		{
@@ -299,7 +305,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 				return;
 		}
 		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, m_solver ? *m_solver : SolverOptions{}, &m_warm);
-		m_wasTouching = c.Ok() && c.separation <= kContactHoldGap;
+		m_wasTouching = c.Ok() && c.separation <= hold;
 		if (c.Ok())
 		{
 			m_lastNormal = c.normal;
@@ -402,12 +408,13 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	// level), and Box2D, which measures separations from the points, sees the true, positive
 	// gap: a face lifted by a fraction of a millimetre keeps its two points, as it would touching.
 	// Box2D's velocity solver holds such a point at no approach and its position solver leaves
-	// it alone (kContactHoldGap, AnalyticFixture.h, says why the contact is held).
+	// it alone (kContactHoldGap, AnalyticFixture.h, says why the contact is held; m_nonConvex
+	// contacts hold across kNonConvexHoldGap).
 	double held = 0.0;
 	if (IsTouching())
 	{
 		const double gap = Dot(oriented.pointB - oriented.pointA, oriented.normal) - radii;
-		if (gap > 0.0 && gap <= kContactHoldGap)
+		if (gap > 0.0 && gap <= (m_nonConvex ? kNonConvexHoldGap : kContactHoldGap))
 			held = gap + 1e-12 * (1.0 + radii);
 	}
 	const ContactManifold m = fromB ? BuildContactManifold(oriented, sideB, sideA, m_patchTolerance, m_patchMinWidth, radii + held, &m_patch)

@@ -65,6 +65,7 @@ private:
 	bool m_hasNormal = false;    // m_lastNormal is set
 	bool m_wasTouching = false;  // the last solve found the analytic pair touching (then no separating-axis tests)
 	bool m_prepared = false;     // m_preparedManifold holds a manifold computed ahead of the step (Prepare)
+	bool m_nonConvex = false;    // a heart against a heart or a plain shape: it holds across kNonConvexHoldGap
 	Side m_sideA, m_sideB;
 	double m_patchTolerance = 0.0, m_patchMinWidth = 0.0; // the analytic sides' (the smaller of two)
 	// A's solver options, where A is analytic (its fixture's data, which outlives the contact;
