@@ -10,11 +10,14 @@
 #include <doctest/doctest.h>
 
 #include "b2analytic/b2analytic.h"
+#include "contact/GridScale.h"
 #include "contact/OverlapParts.h"
+#include "contact/SampleRuns.h"
 #include "TestSupport.h"
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -138,4 +141,63 @@ TEST_CASE("OverlapParts: the shortcuts keep exactly the full path's parts on ran
 		MESSAGE(p.name << ": poses " << tally.poses << ", own part skipped " << tally.skippable << ", kept parts " << tally.twoParts
 		                << ", dense agree " << tally.denseAgree);
 	}
+}
+
+// OverlapParts takes the levels the thread's last grid solve evaluated (LastGridLevels) where that
+// solve rescaled its outer particle onto its inner one's surface in the same relative pose. The
+// reused levels must be Level's own at those places, bit for bit, and the parts found with them
+// the parts found without (the last grid solve another pair's), bit for bit; a pose one ulp off
+// or the sides swapped must not match. Reference: Shape::Level at ToWorld(rel, sample) and
+// OverlapParts after a grid solve that does not match.
+TEST_CASE("OverlapParts: the grid solve's levels, reused, give the parts bit for bit")
+{
+	const ShapePtr a = MakeHeart(0.2), b = MakeHeart(0.15);
+	const SampleRuns& runs = SampleRunsOf(*b, Shape::kDefaultSampleCount);
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	test::Random random(4402);
+	const double reach = a->BoundingRadius() + b->BoundingRadius();
+	int poses = 0, reusedLevels = 0, withParts = 0;
+	for (int tries = 0; tries < 4000 && poses < 300; ++tries)
+	{
+		const Pose pa(Vec2(0.0, 0.0), random.Angle());
+		const double dir = random.Angle(), dist = random.Uniform(0.3, 1.0) * reach;
+		const Pose pb(Vec2(dist * std::cos(dir), dist * std::sin(dir)), random.Angle());
+		if (!SolveGridScale(*a, pa, *b, pb, SolverOptions{}, nan).Ok())
+			continue;
+		if (!(SolveGridScale(*a, pa, *b, pb, SolverOptions{}, nan).level < a->SurfaceLevel()))
+			continue; // (touching poses: the manifold's case)
+		++poses;
+		CAPTURE(poses);
+		const Pose rel = Relative(pa, pb);
+		GridLevels known;
+		REQUIRE(LastGridLevels(*a, *b, rel, *runs.samples, &known));
+		for (int k = 0; k < runs.samples->Count(); ++k)
+		{
+			if (known.stamp[k] != known.generation)
+				continue;
+			++reusedLevels;
+			const double own = a->Level(ToWorld(rel, runs.samples->point[size_t(k)]));
+			REQUIRE(std::memcmp(&own, &known.value[k], sizeof own) == 0);
+		}
+		// Keys that must not match: the sides swapped, the pose one ulp off.
+		GridLevels other;
+		CHECK_FALSE(LastGridLevels(*b, *a, rel, *runs.samples, &other));
+		Pose nudged = rel;
+		nudged.p.x = std::nextafter(nudged.p.x, 1e9);
+		CHECK_FALSE(LastGridLevels(*a, *b, nudged, *runs.samples, &other));
+		OverlapPart reused[4], fresh[4];
+		const int nReused = OverlapParts(*a, pa, *b, pb, true, reused, 4);
+		SolveGridScale(*b, pb, *a, pa, SolverOptions{}, nan); // another key: nothing to reuse
+		REQUIRE_FALSE(LastGridLevels(*a, *b, rel, *runs.samples, &other));
+		const int nFresh = OverlapParts(*a, pa, *b, pb, true, fresh, 4);
+		REQUIRE(nReused == nFresh);
+		withParts += nFresh > 0 ? 1 : 0;
+		for (int k = 0; k < nFresh; ++k)
+			CHECK(SameBits(reused[k], fresh[k]));
+	}
+	CHECK(poses == 300);
+	// Not vacuous: levels were reused on every pose, and parts found on most.
+	CHECK(reusedLevels >= poses);
+	CHECK(withParts > poses / 2);
+	MESSAGE("poses " << poses << ", reused levels " << reusedLevels << ", with parts " << withParts);
 }

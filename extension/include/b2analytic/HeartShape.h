@@ -60,6 +60,9 @@ private:
 	// local maximum of d·x.
 	bool TangencyNewton(Vec2 d, Vec2 start, Vec2 before, Vec2 after, Vec2& x) const;
 	double m_alpha;
+	// α^{1/6}, RadiusAt's start at the surface level (std::pow's own value: every surface point
+	// of the grid's refinement and the manifolds' part search asked for it again).
+	double m_alphaSixth;
 	// The sample farthest along d: the vertex of the samples' convex hull whose normal cone
 	// holds d (a binary search over the hull's edge normals), as a scan of the samples finds it.
 	int BestSample(Vec2 d) const;

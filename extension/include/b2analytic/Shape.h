@@ -297,6 +297,9 @@ public:
 	const SurfaceSamples& SamplesRef(int count = kDefaultSampleCount) const;
 	/// The default number of surface samples for the grid method.
 	static constexpr int kDefaultSampleCount = 256;
+	/// A number no other shape object of this process has (nor had): keys results kept between
+	/// calls (a thread's last grid levels, the dense sampling pass) to this shape alone.
+	std::uint64_t Serial() const { return m_serial; }
 
 protected:
 	/// Set the constant properties; derived constructors call Finalize() once they are ready.

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -391,6 +392,17 @@ struct GridScratch
 	std::vector<int> scannedRuns; // those runs, in increasing order (bounded scans)
 	std::vector<std::pair<double, int>> order;
 	std::vector<int> minima;
+	// The last solve's key, where it succeeded on B's own surface (LastGridLevels): A's and B's
+	// serials, B's samples and the relative pose; `published` false until then.
+	bool published = false;
+	std::uint64_t serialA = 0, serialB = 0;
+	const SurfaceSamples* samples = nullptr;
+	Pose bInA;
+	static GridScratch& ForThread()
+	{
+		thread_local GridScratch scratch;
+		return scratch;
+	}
 };
 
 // One grid solve (SolveGridScale): A's level over the samples of B's level-LB curve, found by
@@ -511,7 +523,8 @@ GridScan::GridScan(const Shape& a_, const Pose& pa_, const Shape& b_, const Pose
 	// work arrays are the thread's own, kept between calls (no allocation a call), and a
 	// sample's value belongs to this call where its stamp is this call's generation (no
 	// clearing a call).
-	thread_local GridScratch scratch;
+	GridScratch& scratch = GridScratch::ForThread();
+	scratch.published = false;
 	if (int(scratch.stamp.size()) != n || ++scratch.generation == 0)
 	{
 		scratch.stamp.assign(n, 0);
@@ -834,6 +847,17 @@ LevelResult GridScan::Solve(Vec2* bodyGradientA)
 	if (!(LengthSquared(normal) > 0.0) || !IsFinite(normal))
 		normal = -Rotate(pb.q, b.Gradient(ToBody(pb, X))); // A's centre on B's surface: use B's normal
 	result.status = SolveStatus::converged;
+	if (ownLevel)
+	{
+		// Every level the solve evaluated is A's Level at ToWorld(walk.bInA, samples->point[k]):
+		// the manifold's part search (OverlapParts) takes them again rather than evaluate them.
+		GridScratch& scratch = GridScratch::ForThread();
+		scratch.published = true;
+		scratch.serialA = a.Serial();
+		scratch.serialB = b.Serial();
+		scratch.samples = samples;
+		scratch.bInA = walk.bInA;
+	}
 	result.level = bestValue;
 	result.point = X;
 	result.normal = Normalize(normal);
@@ -852,6 +876,20 @@ LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const
                            double levelB, Vec2* bodyGradientA)
 {
 	return GridScan(a, pa, b, pb, options, levelB).Solve(bodyGradientA);
+}
+
+bool LastGridLevels(const Shape& a, const Shape& b, const Pose& bInA, const SurfaceSamples& samples, GridLevels* out)
+{
+	const GridScratch& scratch = GridScratch::ForThread();
+	auto same = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }; // bit for bit
+	const Pose& p = scratch.bInA;
+	if (!scratch.published || scratch.serialA != a.Serial() || scratch.serialB != b.Serial() || scratch.samples != &samples ||
+	    !same(p.p.x, bInA.p.x) || !same(p.p.y, bInA.p.y) || !same(p.q.c, bInA.q.c) || !same(p.q.s, bInA.q.s))
+		return false;
+	out->value = scratch.value.data();
+	out->stamp = scratch.stamp.data();
+	out->generation = scratch.generation;
+	return true;
 }
 
 LevelResult SolveCommonLevelGrid(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options)

@@ -3,6 +3,8 @@
 
 #include "b2analytic/CommonLevel.h"
 
+#include <cstdint>
+
 namespace b2a
 {
 
@@ -11,5 +13,20 @@ namespace b2a
 /// needs it again for its normal, its crossing and its one-side test.
 LevelResult SolveGridScale(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb, const SolverOptions& options,
                            double levelB, Vec2* bodyGradientA);
+
+/// The levels of A at B's surface samples that this thread's last grid solve evaluated.
+struct GridLevels
+{
+	const double* value = nullptr;         ///< A's level at sample k where stamp[k] == generation
+	const std::uint32_t* stamp = nullptr;  ///< per sample
+	std::uint32_t generation = 0;          ///< the solve's stamp
+};
+
+/// Where this thread's last grid solve (SolveGridScale, succeeded) rescaled A onto B's own
+/// surface through `samples` (B's, SampleRunsOf's) with the relative pose bInA (B's body to
+/// A's, Relative(pa, pb), bit for bit): the levels it evaluated, each A's Level at
+/// ToWorld(bInA, samples.point[k]), into *out, and true. False elsewhere. Valid until the
+/// thread's next grid solve.
+bool LastGridLevels(const Shape& a, const Shape& b, const Pose& bInA, const SurfaceSamples& samples, GridLevels* out);
 
 } // namespace b2a

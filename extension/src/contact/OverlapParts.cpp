@@ -1,6 +1,7 @@
 // b2analytic: the parts of two particles' overlap, for non-convex pairs' manifolds.
 #include "contact/OverlapParts.h"
 
+#include "contact/GridScale.h"
 #include "contact/SampleRuns.h"
 #include "numerics/RootFinding.h"
 
@@ -24,6 +25,7 @@ struct Scratch
 	std::vector<int> index;       // the sample of each place; then the minima, in order
 	std::vector<int> wrapped;     // minima at or before `start`
 	std::vector<int> minima;      // the minima, in order
+	std::vector<int> slot;        // the sample of each place evaluated here
 	static Scratch& ForThread(int n)
 	{
 		thread_local Scratch s;
@@ -35,6 +37,7 @@ struct Scratch
 			s.x.resize(size_t(n));
 			s.index.resize(size_t(n));
 			s.wrapped.resize(size_t(n));
+			s.slot.resize(size_t(n));
 		}
 		return s;
 	}
@@ -44,7 +47,7 @@ struct Scratch
 // increasing order, into index (returns their count): only they can be inside outer. Groups of
 // runs first, then each run's disc, then its thin box, as the grid method bounds them. Every
 // sample where the shape has no bounds.
-int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs, bool fast, int* index)
+int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs, bool fast, const GridLevels* known, int* index)
 {
 	const int n = runs.samples->Count();
 	const LevelBounds* bounds = fast ? outer.Bounds() : nullptr;
@@ -88,16 +91,24 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 	{
 		if (lower[j] >= surface)
 			continue;
-		// The run's thin box, where its disc did not rule it out (as the grid method's last
-		// look before it evaluates a run).
-		OrientedBox box = runs.runBox[size_t(runOf[j])];
-		box.centre = ToWorld(rel, box.centre);
-		box.axis = Rotate(rel.q, box.axis);
-		if (bounds->TightLevelLowerBound(box) >= surface)
-			continue;
 		// Runs come in increasing order and share their end samples: each sample once.
 		const int first = runOf[j] * SampleRuns::kRunLength;
 		const int last = std::min(first + SampleRuns::kRunLength, n);
+		// The run's thin box, where its disc did not rule it out (as the grid method's last
+		// look before it evaluates a run), unless every level of the run is known already (the
+		// grid solve's): a run the box rules out is outside, and its levels, evaluated or +∞,
+		// order its samples the same against any sample inside.
+		bool allKnown = known != nullptr;
+		for (int k = first; k <= last && allKnown; ++k)
+			allKnown = known->stamp[k == n ? 0 : k] == known->generation;
+		if (!allKnown)
+		{
+			OrientedBox box = runs.runBox[size_t(runOf[j])];
+			box.centre = ToWorld(rel, box.centre);
+			box.axis = Rotate(rel.q, box.axis);
+			if (bounds->TightLevelLowerBound(box) >= surface)
+				continue;
+		}
 		for (int k = m > 0 && index[m - 1] >= first ? index[m - 1] + 1 : first; k <= last; ++k)
 		{
 			if (k == n)
@@ -160,12 +171,27 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	const Pose rel = Relative(po, pi); // inner's body to outer's body
 	Scratch& scratch = Scratch::ForThread(n);
 	double* level = scratch.level.data();
-	const int m = ReachableSamples(outer, rel, runs, fast, scratch.index.data());
+	// The levels this thread's last grid solve evaluated, where it rescaled outer onto inner's
+	// surface in this relative pose (the contact's solve, just before): the same Level at the
+	// same point, bit for bit (LastGridLevels), taken rather than evaluated again.
+	GridLevels known;
+	const bool reuse = fast && LastGridLevels(outer, inner, rel, samples, &known);
+	const int m = ReachableSamples(outer, rel, runs, fast, reuse ? &known : nullptr, scratch.index.data());
+	int evaluated = 0;
 	for (int j = 0; j < m; ++j)
-		scratch.x[j] = ToWorld(rel, samples.point[size_t(scratch.index[j])]);
-	outer.Levels(scratch.x.data(), m, scratch.gathered.data());
-	for (int j = 0; j < m; ++j)
-		level[scratch.index[j]] = scratch.gathered[j];
+	{
+		const int k = scratch.index[j];
+		if (reuse && known.stamp[k] == known.generation)
+			level[k] = known.value[k];
+		else
+		{
+			scratch.x[evaluated] = ToWorld(rel, samples.point[size_t(k)]);
+			scratch.slot[evaluated++] = k;
+		}
+	}
+	outer.Levels(scratch.x.data(), evaluated, scratch.gathered.data());
+	for (int j = 0; j < evaluated; ++j)
+		level[scratch.slot[j]] = scratch.gathered[j];
 	// (Only an evaluated sample can be inside, and the places were gathered in increasing order
 	// of their samples: the loops below run over them alone.)
 	const double surface = outer.SurfaceLevel();
@@ -204,7 +230,7 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 			++first;
 		auto isMinimum = [&](int k) {
 			const double here = level[k];
-			return inside(k) && here <= level[(k + n - 1) % n] && here < level[(k + 1) % n];
+			return inside(k) && here <= level[k == 0 ? n - 1 : k - 1] && here < level[k + 1 == n ? 0 : k + 1];
 		};
 		int* wrapped = scratch.wrapped.data();
 		int wrappedCount = 0;

@@ -26,6 +26,7 @@ HeartShape::HeartShape(double alpha) : Shape(BuiltinKinds::nonConvex, alpha, fal
 {
 	if (!std::isfinite(alpha) || !(alpha > 0.0))
 		throw InvalidParameter("heart", "alpha", "must be finite and > 0", alpha);
+	m_alphaSixth = std::pow(alpha, 1.0 / 6.0);
 	SetDerivativesCheap();
 	AddCorner(0.5 * kPi);  // notch
 	AddCorner(-0.5 * kPi); // tip
@@ -374,7 +375,7 @@ double HeartShape::RadiusAt(Vec2 u, double level) const
 	if (!(level > 0.0))
 		return 0.0;
 	const double k = CubeRoot(u.x * u.x * u.y * u.y * u.y);
-	double s = std::max(k, 0.0) + std::pow(level, 1.0 / 6.0);
+	double s = std::max(k, 0.0) + (level == m_alpha ? m_alphaSixth : std::pow(level, 1.0 / 6.0));
 	for (int it = 0; it < 100; ++it)
 	{
 		const double s4 = (s * s) * (s * s);
