@@ -70,14 +70,12 @@ constexpr double kContactHoldGap = 0.05 * b2_linearSlop;
 /// The hold gap of a contact between a particle that is not convex (a heart) and another such
 /// particle or a plain Box2D polygon, edge or chain link: Box2D's linear slop (5 mm in metres). A
 /// heart resting in a pile leans on its neighbours by curved lobes, and such a load-bearing
-/// contact drifts apart by a few tenths of a millimetre a second while its bodies are below
-/// Box2D's sleep tolerances; across kContactHoldGap it then stopped touching, which woke its
-/// island and dropped the load for a step (a kick of up to 0.06 m/s), and the pile stayed awake
-/// (docs/benchmarks.md, "Sleeping piles"). A held contact only stops its surfaces approaching
-/// (Box2D's velocity solver has no separation term); the slop is the overlap Box2D itself leaves
-/// resting contacts at. Against a convex particle a heart keeps kContactHoldGap: held as far
-/// there, two of five 20-particle mixed piles of tests/box2d/SleepingPileTests.cpp were awake at
-/// 15 s (one before).
+/// contact can drift apart by a few tenths of a millimetre while its bodies are below Box2D's
+/// sleep tolerances; once it stops touching, Box2D wakes its island and the load drops for a
+/// step, and the pile stays awake (docs/benchmarks.md, "Sleeping piles"). A held contact only
+/// stops its surfaces approaching (Box2D's velocity solver has no separation term); the slop is
+/// the overlap Box2D itself leaves resting contacts at. Against a convex particle a heart keeps
+/// kContactHoldGap: held as far there, mixed piles sleep later (docs/benchmarks.md).
 constexpr double kNonConvexHoldGap = b2_linearSlop;
 
 /// The analytic part of a fixture definition.

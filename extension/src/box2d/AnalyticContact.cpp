@@ -260,6 +260,11 @@ void AnalyticContact::Evaluate(b2Manifold* manifold, const b2Transform& xfA, con
 	EvaluateAnalytic(manifold, xfA, xfB);
 }
 
+double AnalyticContact::HoldGap() const
+{
+	return m_nonConvex ? kNonConvexHoldGap : kContactHoldGap;
+}
+
 void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB)
 {
 	const Side& pa = m_sideA;
@@ -279,7 +284,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		// overlap for many pairs whose particles are apart (elongated ones especially).
 		const Shape& shapeA = *pa.shape;
 		const Shape& shapeB = *pb.shape;
-		const double hold = m_nonConvex ? kNonConvexHoldGap : kContactHoldGap;
+		const double hold = HoldGap();
 		const double reach = pa.radius + pb.radius + (IsTouching() ? hold : 0.0);
 		const Vec2 between = poseB.p - poseA.p;
 		if (LengthSquared(between) > reach * reach)
@@ -408,13 +413,12 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	// level), and Box2D, which measures separations from the points, sees the true, positive
 	// gap: a face lifted by a fraction of a millimetre keeps its two points, as it would touching.
 	// Box2D's velocity solver holds such a point at no approach and its position solver leaves
-	// it alone (kContactHoldGap, AnalyticFixture.h, says why the contact is held; m_nonConvex
-	// contacts hold across kNonConvexHoldGap).
+	// it alone (HoldGap; AnalyticFixture.h says why the contact is held).
 	double held = 0.0;
 	if (IsTouching())
 	{
 		const double gap = Dot(oriented.pointB - oriented.pointA, oriented.normal) - radii;
-		if (gap > 0.0 && gap <= (m_nonConvex ? kNonConvexHoldGap : kContactHoldGap))
+		if (gap > 0.0 && gap <= HoldGap())
 			held = gap + 1e-12 * (1.0 + radii);
 	}
 	const ContactManifold m = fromB ? BuildContactManifold(oriented, sideB, sideA, m_patchTolerance, m_patchMinWidth, radii + held, &m_patch)

@@ -435,11 +435,9 @@ int LobesOnFace(const Face& fa, const ManifoldSide& b, double tol, double radii,
 // as the deepest part: of three parts of similar depths (a heart wedged between two lobes), the
 // pair otherwise changed every other step, the normal turning by 0.5 rad. Where either part's
 // normal lies more than 60 degrees from the common one, the contact's point alone. Deep parts
-// (deeper than a tenth of the smaller particle) count as any other: with the contact's point
-// alone there, the deepest part by the scaling factor changed from step to step, the normal
-// turning by more than 0.2 rad at 28 % of a deep contact's steps and its warm start lost at
-// 31 %, and a pile of 3000 hearts in a game's units sank into itself (docs/benchmarks.md,
-// "The pile of 3000 hearts"). `places` receives the points' own places on B (world), by which
+// (deeper than a tenth of the smaller particle) count as any other: which part is deepest by the
+// scaling factor changes with small motions there, and a one-point manifold would turn its normal
+// and lose its warm start with it (docs/benchmarks.md, "The pile of 3000 hearts"). `places` receives the points' own places on B (world), by which
 // the next step matches its parts to these (MatchPartIds).
 ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, const ManifoldSide& b, double radii, double full,
                                 const ContactManifold& single, const ManifoldCache& cache, Vec2 places[2])
@@ -555,10 +553,9 @@ ContactManifold TwoPartManifold(const ContactResult& c, const ManifoldSide& a, c
 // stays swapped ids with it: the warm start then pushed where the other had been.)
 // `places` are the points' places on B's surface (world): a part's manifold point is moved
 // along the common normal, as far as 0.3 m where the overlap's parts lie along a curve, and
-// TwoPartManifold finds the last step's parts again by their places on B, not by those points.
-// (By the moved points, a deep part lay farther than a tenth of the particle from where the next
-// step found it: in the pile of 3000 hearts, 69 % of the two-part manifolds following two-part
-// ones changed their parts.)
+// TwoPartManifold finds the last step's parts again by their places on B, not by those points
+// (a deep part's moved point can lie farther than a tenth of the particle from where the next
+// step finds the part).
 void MatchPartIds(ContactManifold& m, const Vec2 places[2], const ManifoldSide& b, ManifoldCache& cache)
 {
 	Vec2 here[2];
