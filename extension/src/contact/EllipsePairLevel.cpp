@@ -15,11 +15,14 @@ namespace
 {
 // λ(x) = (x − c)ᵀ M (x − c) with M = R diag(1/a², 1/b²) Rᵀ (world frame, centre c). For n = 2
 // the shape's hessX = n(n − 1)/a² is 2/a², so half of it is 1/a² to the bit, without the two
-// divisions a query, which the first Halley step waited for.
+// divisions a query, which the first Halley step waited for. Rotate's R H Rᵀ with H diagonal
+// written out: its terms in H's zero off-diagonal add a signed zero each, so the entries are
+// Rotate's to the bit (but for the sign of a zero xy), in fewer operations.
 Sym22 LevelMatrix(const SuperellipseShape& s, const Pose& p)
 {
 	const SuperellipseTerms& t = s.Terms();
-	return Rotate(p.q, Sym22{0.5 * t.hessX, 0.0, 0.5 * t.hessY});
+	const double c = p.q.c, sn = p.q.s, hx = 0.5 * t.hessX, hy = 0.5 * t.hessY;
+	return {c * c * hx + sn * sn * hy, c * sn * (hx - hy), sn * sn * hx + c * c * hy};
 }
 
 double Quad(const Sym22& m, Vec2 v) { return Dot(v, m * v); }
@@ -267,9 +270,12 @@ MultiplierRoot SolveMultiplier(const EllipsePair& e, double s, double settle)
 			m.failure = "ellipse pair: non-finite answer";
 			break;
 		}
-		if (h > 0.0) lo = s;
-		else if (h < 0.0) hi = s;
-		else break;
+		if (h == 0.0)
+			break;
+		// (Selects, not branches: near the root h's sign is rounding's, which no predictor
+		// foresees.)
+		lo = h > 0.0 ? s : lo;
+		hi = h < 0.0 ? s : hi;
 		const double slope = -0.5 * Dot(d, wk); // σk³·h'
 		const double relativeTo = std::min(s, 1.0 - s);
 		double next = 0.5 * (lo + hi); // bisection unless the step below stays in the bracket
