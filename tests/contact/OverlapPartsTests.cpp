@@ -15,6 +15,7 @@
 #include "contact/SampleRuns.h"
 #include "TestSupport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -156,7 +157,7 @@ TEST_CASE("OverlapParts: the grid solve's levels, reused, give the parts bit for
 	const double nan = std::numeric_limits<double>::quiet_NaN();
 	test::Random random(4402);
 	const double reach = a->BoundingRadius() + b->BoundingRadius();
-	int poses = 0, reusedLevels = 0, withParts = 0;
+	int poses = 0, reusedLevels = 0, reusedBounds = 0, withParts = 0;
 	for (int tries = 0; tries < 4000 && poses < 300; ++tries)
 	{
 		const Pose pa(Vec2(0.0, 0.0), random.Angle());
@@ -179,6 +180,28 @@ TEST_CASE("OverlapParts: the grid solve's levels, reused, give the parts bit for
 			const double own = a->Level(ToWorld(rel, runs.samples->point[size_t(k)]));
 			REQUIRE(std::memcmp(&own, &known.value[k], sizeof own) == 0);
 		}
+		// The reused bounds: each group's A's LevelLowerBounds over its disc, bit for bit; each run
+		// the solve bounded, the larger of its own disc's and its group's.
+		REQUIRE(known.groupBound != nullptr);
+		const int groups = int(runs.groupCentre.size());
+		for (int g = 0; g < groups; ++g)
+		{
+			const Vec2 centre = ToWorld(rel, runs.groupCentre[size_t(g)]);
+			double own = 0.0;
+			a->Bounds()->LevelLowerBounds(&centre, &runs.groupRadius[size_t(g)], 1, &own);
+			REQUIRE(std::memcmp(&own, &known.groupBound[g], sizeof own) == 0);
+		}
+		for (int r = 0; r < int(runs.runCentre.size()); ++r)
+		{
+			if (known.runStamp[r] != known.generation)
+				continue;
+			++reusedBounds;
+			const Vec2 centre = ToWorld(rel, runs.runCentre[size_t(r)]);
+			double own = 0.0;
+			a->Bounds()->LevelLowerBounds(&centre, &runs.runRadius[size_t(r)], 1, &own);
+			const double expected = std::max(own, known.groupBound[r / SampleRuns::kGroupRuns]);
+			REQUIRE(std::memcmp(&expected, &known.runBound[r], sizeof expected) == 0);
+		}
 		// Keys that must not match: the sides swapped, the pose one ulp off.
 		GridLevels other;
 		CHECK_FALSE(LastGridLevels(*b, *a, rel, *runs.samples, &other));
@@ -198,6 +221,7 @@ TEST_CASE("OverlapParts: the grid solve's levels, reused, give the parts bit for
 	CHECK(poses == 300);
 	// Not vacuous: levels were reused on every pose, and parts found on most.
 	CHECK(reusedLevels >= poses);
+	CHECK(reusedBounds >= poses);
 	CHECK(withParts > poses / 2);
-	MESSAGE("poses " << poses << ", reused levels " << reusedLevels << ", with parts " << withParts);
+	MESSAGE("poses " << poses << ", reused levels " << reusedLevels << ", reused run bounds " << reusedBounds << ", with parts " << withParts);
 }

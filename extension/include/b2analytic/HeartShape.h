@@ -33,6 +33,11 @@ public:
 	/// tangency (level α and gradient parallel to d) from the best surface sample; where that does
 	/// not settle on a convex stretch between the sample's neighbours, Shape::Support.
 	Vec2 Support(Vec2 d) const override;
+	/// From the default surface samples: the sample farthest along d (BestSample) lies on the
+	/// surface, and the curve keeps within the samples' measured deviation of their polygon (taken
+	/// four times over, as the overlap parts take it); each widened by 1e-12 of the size, so that
+	/// they bound the computed support value too. No Newton step.
+	void SupportBounds(Vec2 d, double& lower, double& upper) const override;
 	/// Every bound of LevelBounds, which the grid method and the line searches inside and toward
 	/// the heart use.
 	const LevelBounds* Bounds() const override { return this; }

@@ -387,6 +387,7 @@ struct GridScratch
 	std::vector<Vec2> inA, discs; // discs: centres of the discs being bounded, in A's frame
 	std::vector<std::uint32_t> stamp; // value[k] is this call's where stamp[k] == generation
 	std::vector<std::uint32_t> raySolved; // segment k → k + 1's corner-ray crossing solved where == generation
+	std::vector<std::uint32_t> runStamp;  // bound[r] is this call's where runStamp[r] == generation
 	std::uint32_t generation = 0;
 	std::vector<char> scanned; // per run: evaluated whole
 	std::vector<int> scannedRuns; // those runs, in increasing order (bounded scans)
@@ -395,6 +396,7 @@ struct GridScratch
 	// The last solve's key, where it succeeded on B's own surface (LastGridLevels): A's and B's
 	// serials, B's samples and the relative pose; `published` false until then.
 	bool published = false;
+	bool groupsBounded = false; // groupBound holds every group's bound (the solve was grouped)
 	std::uint64_t serialA = 0, serialB = 0;
 	const SurfaceSamples* samples = nullptr;
 	Pose bInA;
@@ -456,7 +458,10 @@ private:
 		GroupRuns(G, first, last);
 		BoundDiscs(hierarchy.runCentre, hierarchy.runRadius, first, last, bound + first);
 		for (int g = first; g < last; ++g)
+		{
 			bound[g] = bound[g] > groupBound[G] ? bound[g] : groupBound[G];
+			runStamp[g] = generation;
+		}
 	}
 	void Bound();
 	void ScanRun(int g);
@@ -496,6 +501,7 @@ private:
 	double* value = nullptr;
 	std::uint32_t* stamp = nullptr;
 	std::uint32_t* raySolved = nullptr;
+	std::uint32_t* runStamp = nullptr;
 	Vec2* inA = nullptr; // each evaluated sample in A's body frame
 	char* scanned = nullptr; // per run: evaluated whole
 	int* scannedRuns = nullptr; // those runs (in increasing order once sorted)
@@ -525,10 +531,11 @@ GridScan::GridScan(const Shape& a_, const Pose& pa_, const Shape& b_, const Pose
 	// clearing a call).
 	GridScratch& scratch = GridScratch::ForThread();
 	scratch.published = false;
-	if (int(scratch.stamp.size()) != n || ++scratch.generation == 0)
+	if (int(scratch.stamp.size()) != n || int(scratch.runStamp.size()) != runs || ++scratch.generation == 0)
 	{
 		scratch.stamp.assign(n, 0);
 		scratch.raySolved.assign(n, 0);
+		scratch.runStamp.assign(runs, 0);
 		scratch.generation = 1;
 	}
 	generation = scratch.generation;
@@ -544,6 +551,7 @@ GridScan::GridScan(const Shape& a_, const Pose& pa_, const Shape& b_, const Pose
 	value = scratch.value.data();
 	stamp = scratch.stamp.data();
 	raySolved = scratch.raySolved.data();
+	runStamp = scratch.runStamp.data();
 	inA = scratch.inA.data();
 	scanned = scratch.scanned.data();
 	scannedRuns = scratch.scannedRuns.data();
@@ -570,6 +578,7 @@ void GridScan::Bound()
 	if (bounded && !grouped)
 	{
 		BoundDiscs(hierarchy.runCentre, hierarchy.runRadius, 0, runs, bound);
+		std::fill(runStamp, runStamp + runs, generation);
 		for (int g = 0; g < runs && bounded; ++g)
 			bounded = bound[g] > noBound; // else no bound: scan everything
 	}
@@ -853,6 +862,7 @@ LevelResult GridScan::Solve(Vec2* bodyGradientA)
 		// the manifold's part search (OverlapParts) takes them again rather than evaluate them.
 		GridScratch& scratch = GridScratch::ForThread();
 		scratch.published = true;
+		scratch.groupsBounded = grouped;
 		scratch.serialA = a.Serial();
 		scratch.serialB = b.Serial();
 		scratch.samples = samples;
@@ -889,6 +899,9 @@ bool LastGridLevels(const Shape& a, const Shape& b, const Pose& bInA, const Surf
 	out->value = scratch.value.data();
 	out->stamp = scratch.stamp.data();
 	out->generation = scratch.generation;
+	out->groupBound = scratch.groupsBounded ? scratch.groupBound.data() : nullptr;
+	out->runBound = scratch.bound.data();
+	out->runStamp = scratch.runStamp.data();
 	return true;
 }
 

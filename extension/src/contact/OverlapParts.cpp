@@ -46,7 +46,7 @@ struct Scratch
 // The samples of every run over which outer's level bounds lie below its surface level, in
 // increasing order, into index (returns their count): only they can be inside outer. Groups of
 // runs first, then each run's disc, then its thin box, as the grid method bounds them. Every
-// sample where the shape has no bounds.
+// sample where the shape has no bounds. `known`: the grid solve's levels and bounds in this pose.
 int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs, bool fast, const GridLevels* known, int* index)
 {
 	const int n = runs.samples->Count();
@@ -61,15 +61,28 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 		return n;
 	}
 	const double surface = outer.SurfaceLevel();
-	Vec2 centres[kMaxDiscs];
-	double radii[kMaxDiscs], lower[kMaxDiscs];
-	int runOf[kMaxDiscs];
-	for (int g = 0; g < groups; ++g)
+	// (The discs' centres unset until written: a Vec2 array is zeroed where it is declared.)
+	union Discs
 	{
-		centres[g] = ToWorld(rel, runs.groupCentre[size_t(g)]);
-		radii[g] = runs.groupRadius[size_t(g)];
+		Discs() {}
+		Vec2 centre[kMaxDiscs];
+	} discs;
+	Vec2* centres = discs.centre;
+	double radii[kMaxDiscs], lower[kMaxDiscs], fresh[kMaxDiscs];
+	int runOf[kMaxDiscs], slot[kMaxDiscs];
+	// The bounds the grid solve took in this relative pose (known: the same LevelLowerBounds over
+	// the same discs, bit for bit) are taken again; the others are evaluated together.
+	if (known && known->groupBound)
+		std::copy(known->groupBound, known->groupBound + groups, lower);
+	else
+	{
+		for (int g = 0; g < groups; ++g)
+		{
+			centres[g] = ToWorld(rel, runs.groupCentre[size_t(g)]);
+			radii[g] = runs.groupRadius[size_t(g)];
+		}
+		bounds->LevelLowerBounds(centres, radii, groups, lower);
 	}
-	bounds->LevelLowerBounds(centres, radii, groups, lower);
 	int candidates = 0;
 	for (int g = 0; g < groups; ++g)
 	{
@@ -79,12 +92,25 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 		for (int r = g * SampleRuns::kGroupRuns; r < last; ++r)
 			runOf[candidates++] = r;
 	}
+	// A run's bound from the grid is at least its group's, which lies below the surface level
+	// here: below it exactly where the run's own bound is.
+	int toBound = 0;
 	for (int j = 0; j < candidates; ++j)
 	{
-		centres[j] = ToWorld(rel, runs.runCentre[size_t(runOf[j])]);
-		radii[j] = runs.runRadius[size_t(runOf[j])];
+		const int r = runOf[j];
+		if (known && known->runStamp[r] == known->generation)
+		{
+			lower[j] = known->runBound[r];
+			continue;
+		}
+		centres[toBound] = ToWorld(rel, runs.runCentre[size_t(r)]);
+		radii[toBound] = runs.runRadius[size_t(r)];
+		slot[toBound++] = j;
 	}
-	bounds->LevelLowerBounds(centres, radii, candidates, lower);
+	if (toBound > 0)
+		bounds->LevelLowerBounds(centres, radii, toBound, fresh);
+	for (int i = 0; i < toBound; ++i)
+		lower[slot[i]] = fresh[i];
 	int m = 0;
 	bool wrapsToZero = false; // the last run's last sample is sample 0
 	for (int j = 0; j < candidates; ++j)

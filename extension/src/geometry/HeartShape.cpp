@@ -448,6 +448,15 @@ Vec2 HeartShape::Support(Vec2 d) const
 	return Shape::Support(d);
 }
 
+void HeartShape::SupportBounds(Vec2 d, double& lower, double& upper) const
+{
+	const SurfaceSamples& samples = SamplesRef();
+	const double value = Dot(d, samples.point[size_t(BestSample(d))]);
+	const double size = Length(d) * BoundingRadius();
+	lower = value - 1e-12 * size;
+	upper = value + 4.0 * samples.maxDeviation * Length(d) + 1e-12 * size;
+}
+
 std::shared_ptr<HeartShape> MakeHeart(double alpha)
 {
 	return std::make_shared<HeartShape>(alpha);
