@@ -111,6 +111,36 @@ TEST_CASE("BuildContactManifold: a block lying on a face stands on its own face'
 	CHECK(std::fabs(std::remainder(cache.faceA[0] - 0.5 * kPi, 2.0 * kPi)) < 1e-6);
 }
 
+TEST_CASE("BuildContactManifold: a superellipse's face is the shape's own, the same from every contact on it")
+{
+	// Blocks at different places and tilts on A's top face, each contact with a fresh cache: the
+	// face kept is A's top face, the same angles to the bit whichever contact point found it
+	// (a search from each contact point finds the flattest point to 1e-8 rad only), and its ends
+	// those of the closed form (CheckFaceEnds, through B's).
+	const ShapePtr a = MakeSuperellipse(3.0, 1.0, 4.0, 4.0);
+	const ShapePtr b = MakeSuperellipse(1.0, 0.625, 4.0, 4.0);
+	const Pose pa(Vec2(0.0, 0.0), 0.0);
+	const LD half = FaceHalfWidth(1.0L, 0.625L, 4.0L);
+	double first[3] = {0.0, 0.0, 0.0};
+	for (int k = 0; k < 6; ++k)
+	{
+		CAPTURE(k);
+		const Pose pb(Vec2(-0.5 + 0.2 * k, 1.0 + 0.625 - 4e-3), 0.0007 * (k - 2));
+		const ContactResult c = ComputeContact(*a, pa, *b, pb);
+		REQUIRE(c.Ok());
+		const ManifoldSide sa{a.get(), pa}, sb{b.get(), pb};
+		ManifoldCache cache;
+		const std::vector<Vec2> ends{BottomPoint(pb, 1.0L, 0.625L, 4.0L, -half), BottomPoint(pb, 1.0L, 0.625L, 4.0L, half)};
+		CheckFaceEnds(BuildContactManifold(c, sa, sb, kTol, 0.0, 0.0, &cache), ends, 1.0L);
+		REQUIRE(cache.validA);
+		CHECK(std::fabs(cache.faceA[0] - 0.5 * kPi) < 1e-6);
+		if (k == 0)
+			std::copy(cache.faceA, cache.faceA + 3, first);
+		for (int j = 0; j < 3; ++j)
+			CHECK(cache.faceA[j] == first[j]);
+	}
+}
+
 TEST_CASE("BuildContactManifold: a stale or broken cache is searched anew")
 {
 	const ShapePtr a = MakeSuperellipse(3.0, 1.0, 4.0, 4.0);

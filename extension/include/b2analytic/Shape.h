@@ -157,6 +157,9 @@ protected:
 
 /// The grid method's acceleration data for a shape's samples (contact/SampleRuns.h): opaque here.
 struct SampleRuns;
+/// The contact manifold's faces of a shape for one patch tolerance (contact/ContactManifold.cpp):
+/// opaque here.
+struct FaceTable;
 
 /// An analytic particle shape described by a level function λ(x) in its body frame.
 ///
@@ -340,6 +343,11 @@ private:
 	friend struct SampleRunsCache;
 	mutable std::vector<std::shared_ptr<const SampleRuns>> m_runs;
 	mutable std::atomic<const SampleRuns*> m_lastRuns{nullptr};
+	// The manifold's faces per patch tolerance, built and kept by the contact layer
+	// (contact/ContactManifold.cpp) under m_sampleMutex, the last one asked for in an atomic pointer.
+	friend struct FaceTableCache;
+	mutable std::vector<std::shared_ptr<const FaceTable>> m_faceTables;
+	mutable std::atomic<const FaceTable*> m_lastFaceTable{nullptr};
 };
 
 /// Shared, immutable handle to a shape.

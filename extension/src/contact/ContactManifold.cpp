@@ -24,6 +24,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -182,6 +184,169 @@ bool OnFace(const double face[3], double theta)
 	return at >= TurnRemainder(face[1] - face[0]) && at <= TurnRemainder(face[2] - face[0]);
 }
 
+} // namespace
+
+// A superellipse's faces for one patch tolerance, found once per shape: FindFace from each end of
+// its axes (the particle is symmetric about both, and a blocky one's flattest points are there),
+// with the body points that a kept face's test and the manifold read (its centre, normal and
+// ends), which a contact would otherwise evaluate at every step. Where the table is complete, a
+// contact's face is the table's face its point lies on, with no search; elsewhere a face found
+// at a contact whose flattest point lies within kFaceSnap of one of these is taken to be it (both
+// are the same curvature minimum, found to 1e-8 rad). Deterministic (found from the axes, not
+// from whichever contact came first), so threads do not change it.
+struct FaceTable
+{
+	struct Entry
+	{
+		double angles[3]; // as FindFace gives them
+		Vec2 centre, normal, ends[2];
+	};
+	double tol = 0.0;
+	int count = 0;
+	Entry faces[4];
+	// Whether the table holds every face: each lies at an axis end and the curvature rises and
+	// falls once between neighbouring axis ends, so that FindFace from any point descends to one.
+	bool complete = false;
+};
+
+namespace
+{
+constexpr double kFaceSnap = 1e-5; // rad; a blocky particle's face spans about 0.1 rad or more
+
+FaceTable BuildFaceTable(const Shape& shape, double tol)
+{
+	FaceTable table;
+	table.tol = tol;
+	for (int k = 0; k < 4; ++k)
+	{
+		double face[3];
+		if (!FindFace(shape, k == 3 ? -0.5 * kPi : 0.5 * kPi * k, tol, face))
+			continue;
+		bool known = false;
+		for (int j = 0; j < table.count; ++j)
+			known = known || std::fabs(TurnRemainder(face[0] - table.faces[j].angles[0])) <= kFaceSnap;
+		if (known)
+			continue;
+		FaceTable::Entry& e = table.faces[table.count++];
+		std::copy(face, face + 3, e.angles);
+		e.centre = shape.SurfacePoint(face[0]);
+		e.normal = Normalize(shape.Gradient(e.centre));
+		e.ends[0] = shape.SurfacePoint(face[1]);
+		e.ends[1] = shape.SurfacePoint(face[2]);
+	}
+	// Complete where every face found lies at the axis end it was searched from and the
+	// curvature over a quadrant (the others are its mirror images) has a single maximum inside
+	// it, sampled 32 times. (A table is built per shape, and a packing has a shape a particle.)
+	table.complete = true;
+	for (int j = 0; j < table.count; ++j)
+	{
+		const double c = table.faces[j].angles[0], quarter = 0.5 * kPi;
+		table.complete = table.complete && std::fabs(c - quarter * std::nearbyint(c / quarter)) <= kFaceSnap;
+	}
+	const int samples = 32;
+	int turns = 0; // changes of the curvature's direction along the quadrant
+	double before = LevelCurvature(shape, shape.SurfacePoint(0.0)), slope = 0.0;
+	for (int i = 1; i <= samples && table.complete; ++i)
+	{
+		const double kappa = LevelCurvature(shape, shape.SurfacePoint(0.5 * kPi * double(i) / samples));
+		const double d = kappa - before;
+		if (!std::isfinite(d))
+			table.complete = false;
+		else if (d != 0.0)
+		{
+			turns += slope != 0.0 && (d > 0.0) != (slope > 0.0) ? 1 : 0;
+			slope = d;
+		}
+		before = kappa;
+	}
+	table.complete = table.complete && turns <= 1;
+	return table;
+}
+} // namespace
+
+// The shape's cache of face tables (its private members, this struct its friend).
+struct FaceTableCache
+{
+	static const FaceTable* Get(const Shape& shape, double tol)
+	{
+		if (shape.Kind() != BuiltinKinds::superellipse)
+			return nullptr;
+		// Entries are never removed, so a pointer to one stays valid with the shape.
+		const FaceTable* last = shape.m_lastFaceTable.load(std::memory_order_acquire);
+		if (last && last->tol == tol)
+			return last;
+		{
+			std::lock_guard<std::mutex> lock(shape.m_sampleMutex);
+			for (const auto& entry : shape.m_faceTables)
+				if (entry->tol == tol)
+				{
+					shape.m_lastFaceTable.store(entry.get(), std::memory_order_release);
+					return entry.get();
+				}
+		}
+		// Built outside the lock (FindFace evaluates the shape); a table another thread built
+		// meanwhile for the same tolerance is the same, and the first one kept wins.
+		auto made = std::make_shared<const FaceTable>(BuildFaceTable(shape, tol));
+		std::lock_guard<std::mutex> lock(shape.m_sampleMutex);
+		const FaceTable* found = nullptr;
+		for (const auto& entry : shape.m_faceTables)
+			if (entry->tol == tol)
+				found = entry.get();
+		if (!found)
+		{
+			found = made.get();
+			shape.m_faceTables.push_back(std::move(made));
+		}
+		shape.m_lastFaceTable.store(found, std::memory_order_release);
+		return found;
+	}
+};
+
+namespace
+{
+// The table's entry for a kept face (its angles exactly the entry's), or null.
+const FaceTable::Entry* TableEntry(const FaceTable* table, const double face[3])
+{
+	if (!table)
+		return nullptr;
+	for (int j = 0; j < table->count; ++j)
+	{
+		const FaceTable::Entry& e = table->faces[j];
+		if (e.angles[0] == face[0] && e.angles[1] == face[1] && e.angles[2] == face[2])
+			return &e;
+	}
+	return nullptr;
+}
+
+// Whether the body point x lies on the table's face: between its ends' rays (OnFace's test by
+// the sides of the rays instead of by x's polar angle; a face spans less than half a turn).
+bool InSector(const FaceTable::Entry& e, Vec2 x) { return Cross(e.ends[0], x) >= 0.0 && Cross(x, e.ends[1]) >= 0.0; }
+
+// The table's face on which the body point x lies, or null.
+const FaceTable::Entry* TableFaceAt(const FaceTable& table, Vec2 x)
+{
+	for (int j = 0; j < table.count; ++j)
+		if (InSector(table.faces[j], x))
+			return &table.faces[j];
+	return nullptr;
+}
+
+// A face just found, replaced by the table's where its flattest point is one of the table's.
+void SnapToTable(const FaceTable* table, double face[3])
+{
+	if (!table)
+		return;
+	for (int j = 0; j < table->count; ++j)
+	{
+		const FaceTable::Entry& e = table->faces[j];
+		if (std::fabs(TurnRemainder(face[0] - e.angles[0])) <= kFaceSnap)
+		{
+			std::copy(e.angles, e.angles + 3, face);
+			return;
+		}
+	}
+}
+
 // Whether the body point x lies within `gap` of the tangent plane at the face's flattest point:
 // a contact point that was on the face at the last step stays on it while it lies within twice
 // the tolerance, instead of leaving as soon as it passes an end (hysteresis). Two offset blocks
@@ -189,12 +354,27 @@ bool OnFace(const double face[3], double theta)
 // few steps, the normal turning and the second point's impulse lost each time, and keep their
 // pile awake (docs/benchmarks.md, "Sleeping piles"). The face's ends, and so the manifold's
 // points, stay those at the tolerance.
-bool NearFacePlane(const Shape& shape, const double face[3], Vec2 x, double gap)
+bool NearFacePlane(const Shape& shape, const FaceTable::Entry* entry, const double face[3], Vec2 x, double gap)
 {
-	const Vec2 c = shape.SurfacePoint(face[0]);
-	const Vec2 n = Normalize(shape.Gradient(c));
+	const Vec2 c = entry ? entry->centre : shape.SurfacePoint(face[0]);
+	const Vec2 n = entry ? entry->normal : Normalize(shape.Gradient(c));
 	const double drop = Dot(c - x, n);
 	return drop >= -gap && drop <= gap;
+}
+
+// A table's face of the side, in world coordinates (its normal and centre where `plane`).
+Face TableSideFace(const ManifoldSide& side, const FaceTable::Entry& e, bool plane)
+{
+	Face out;
+	out.valid = true;
+	if (plane)
+	{
+		out.normal = Rotate(side.pose.q, e.normal);
+		out.centre = ToWorld(side.pose, e.centre);
+	}
+	out.ends[0] = ToWorld(side.pose, e.ends[0]);
+	out.ends[1] = ToWorld(side.pose, e.ends[1]);
+	return out;
 }
 
 // The face of an analytic convex side at its contact point p (world) with outward direction d
@@ -230,9 +410,27 @@ Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, doub
 	if (!CanHaveFaces(shape))
 		return out;
 	const Vec2 x = ToBody(side.pose, p);
+	const FaceTable* table = FaceTableCache::Get(shape, tol);
+	if (table && table->complete)
+	{
+		// Every face is the table's: the kept one while the point stays on it (or near its plane,
+		// as below), else the one the point lies on, with no search and no polar angle.
+		const FaceTable::Entry* entry = cached ? TableEntry(table, face) : nullptr;
+		if (!(entry && (InSector(*entry, x) || (on && NearFacePlane(shape, entry, face, x, 2.0 * tol)))))
+		{
+			entry = TableFaceAt(*table, x);
+			cached = entry != nullptr;
+			if (!entry)
+				return out;
+			std::copy(entry->angles, entry->angles + 3, face);
+		}
+		wasOn = true;
+		return TableSideFace(side, *entry, plane);
+	}
 	// The contact point's polar angle, once: the kept face's test and the off-face record share it.
 	const double theta = std::atan2(x.y, x.x);
-	if (!(cached && (OnFace(face, theta) || (on && NearFacePlane(shape, face, x, 2.0 * tol)))))
+	const FaceTable::Entry* entry = cached ? TableEntry(table, face) : nullptr;
+	if (!(cached && (OnFace(face, theta) || (on && NearFacePlane(shape, entry, face, x, 2.0 * tol)))))
 	{
 		// Off the face kept (or none kept): a contact point that stays near where none was found
 		// last time is taken to stay off faces, and a search runs only once it has moved on by
@@ -244,15 +442,21 @@ Face AnalyticSideFace(const ManifoldSide& side, Vec2 p, Vec2 d, double tol, doub
 		if (!MayReachFace(shape, x, tol) || !FindFace(shape, theta, tol, face))
 			cached = false;
 		else
+		{
 			cached = true;
+			SnapToTable(table, face);
+		}
 		if (!(cached && OnFace(face, theta)))
 		{
 			offFace = theta;
 			return out;
 		}
+		entry = TableEntry(table, face);
 	}
 	wasOn = true;
 	out.valid = true;
+	if (entry)
+		return TableSideFace(side, *entry, plane);
 	if (plane)
 	{
 		const Vec2 c = shape.SurfacePoint(face[0]);
