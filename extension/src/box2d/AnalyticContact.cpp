@@ -260,7 +260,15 @@ void AnalyticContact::Evaluate(b2Manifold* manifold, const b2Transform& xfA, con
 	EvaluateAnalytic(manifold, xfA, xfB);
 }
 
-double AnalyticContact::HoldGap() const
+const SolverOptions& AnalyticContact::Solver() const
+{
+	// A reference either way: a conditional between the member and a temporary would copy the
+	// options at every evaluation.
+	static constexpr SolverOptions kDefaults{};
+	return m_solver ? *m_solver : kDefaults;
+}
+
+inline double AnalyticContact::HoldGap() const
 {
 	return m_nonConvex ? kNonConvexHoldGap : kContactHoldGap;
 }
@@ -274,7 +282,14 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	ContactResult c;
 	ManifoldSide sideA, sideB;
 	double radii = 0.0;
-	Vec2 vertices[b2_maxPolygonVertices];
+	// The plain polygon's world vertices, for the polygon branch alone: left uninitialised (Vec2
+	// zeroes itself), as most evaluations are of two analytic particles and never touch them.
+	union VertexBuffer
+	{
+		VertexBuffer() {}
+		Vec2 v[b2_maxPolygonVertices];
+	} vertexBuffer;
+	Vec2* const vertices = vertexBuffer.v;
 
 	if (pa.shape && pb.shape)
 	{
@@ -309,7 +324,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 			if (distance > 0.0 && SeparatedAlong(shapeA, poseA, shapeB, poseB, between / distance))
 				return;
 		}
-		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, m_solver ? *m_solver : SolverOptions{}, &m_warm);
+		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, Solver(), &m_warm);
 		m_wasTouching = c.Ok() && c.separation <= hold;
 		if (c.Ok())
 		{
@@ -329,7 +344,7 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 		const b2CircleShape* circle = static_cast<const b2CircleShape*>(m_fixtureB->GetShape());
 		const Pose poseA = Compose(bodyA, pa.local);
 		const Pose poseC(ToWorld(bodyB, V(circle->m_p)), bodyB.q);
-		c = ComputeContact(*pa.shape, poseA, *m_circle, poseC, MethodChoice::automatic, m_solver ? *m_solver : SolverOptions{}, &m_warm);
+		c = ComputeContact(*pa.shape, poseA, *m_circle, poseC, MethodChoice::automatic, Solver(), &m_warm);
 		if (!c.Ok())
 			return;
 		c.pointB = poseC.p;
@@ -406,7 +421,9 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	// the face's side as the manifold's A: where that is the contact's B, the manifold is built
 	// from B's side. (Which side is non-convex is fixed for the contact: its cache keeps its roles.)
 	const bool fromB = sideA.shape && !sideA.shape->IsConvex() && !sideB.point && (!sideB.shape || sideB.shape->IsConvex());
-	const ContactResult oriented = fromB ? FlipContact(c) : c;
+	if (fromB)
+		c = FlipContact(c);
+	const ContactResult& oriented = c;
 	// A contact that touched at the last step (b2Contact::Update still holds that flag while it
 	// evaluates) and is now apart by at most the hold gap: its manifold is built as if the radii
 	// were larger by the gap (faces and their ends as at touching, measured from the lifted

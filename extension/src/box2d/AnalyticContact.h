@@ -68,6 +68,8 @@ private:
 	bool m_nonConvex = false;    // a heart against a heart or a plain shape: it holds across kNonConvexHoldGap
 	// How far apart a touching contact may drift and stay touching (AnalyticFixture.h).
 	double HoldGap() const;
+	// A's solver options, or the defaults where A is a plain shape.
+	const SolverOptions& Solver() const;
 	Side m_sideA, m_sideB;
 	double m_patchTolerance = 0.0, m_patchMinWidth = 0.0; // the analytic sides' (the smaller of two)
 	// A's solver options, where A is analytic (its fixture's data, which outlives the contact;

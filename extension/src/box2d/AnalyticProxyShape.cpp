@@ -44,13 +44,6 @@ void AnalyticProxyShape::Store(AnalyticFixtureData* data)
 	m_vertices[7] = kTag;
 }
 
-AnalyticFixtureData* AnalyticProxyShape::m_dataPointer() const
-{
-	AnalyticFixtureData* data = nullptr;
-	std::memcpy(&data, static_cast<const void*>(&m_normals[7]), sizeof(data));
-	return data;
-}
-
 const AnalyticProxyShape* AnalyticProxyShape::From(const b2Shape* shape)
 {
 	if (!shape || shape->m_type != b2Shape::e_polygon)

@@ -8,6 +8,7 @@
 #include <box2d/b2_polygon_shape.h>
 
 #include <atomic>
+#include <cstring>
 
 namespace b2a
 {
@@ -85,6 +86,14 @@ private:
 	AnalyticFixtureData* m_dataPointer() const;
 	void Store(AnalyticFixtureData* data);
 };
+
+inline AnalyticFixtureData* AnalyticProxyShape::m_dataPointer() const
+{
+	// Inline: ComputeAABB reads it for every fixture twice a step.
+	AnalyticFixtureData* data = nullptr;
+	std::memcpy(&data, static_cast<const void*>(&m_normals[7]), sizeof(data));
+	return data;
+}
 
 static_assert(sizeof(AnalyticProxyShape) == sizeof(b2PolygonShape), "Box2D frees shapes with the base class size");
 static_assert(sizeof(void*) <= sizeof(b2Vec2), "the data pointer must fit in one b2Vec2 slot");
