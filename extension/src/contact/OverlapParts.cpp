@@ -121,18 +121,25 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 		const int first = runOf[j] * SampleRuns::kRunLength;
 		const int last = std::min(first + SampleRuns::kRunLength, n);
 		// The run's thin box, where its disc did not rule it out (as the grid method's last
-		// look before it evaluates a run), unless every level of the run is known already (the
-		// grid solve's): a run the box rules out is outside, and its levels, evaluated or +∞,
-		// order its samples the same against any sample inside.
-		bool allKnown = known != nullptr;
-		for (int k = first; k <= last && allKnown; ++k)
-			allKnown = known->stamp[k == n ? 0 : k] == known->generation;
-		if (!allKnown)
+		// look before it evaluates a run), unless the grid solve evaluated the run whole (every
+		// level of it known; with runs of eight samples no other run is known whole, its middle
+		// samples being evaluated by its own scan alone): a run the box rules out is outside, and
+		// its levels, evaluated or +∞, order its samples the same against any sample inside.
+		// (The grid solve's box bound where it took one: the same bound over the same box.)
+		const int r = runOf[j];
+		if (!(known && known->scanned[r]))
 		{
-			OrientedBox box = runs.runBox[size_t(runOf[j])];
-			box.centre = ToWorld(rel, box.centre);
-			box.axis = Rotate(rel.q, box.axis);
-			if (bounds->TightLevelLowerBound(box) >= surface)
+			double boxLower;
+			if (known && known->boxStamp[r] == known->generation)
+				boxLower = known->boxBound[r];
+			else
+			{
+				OrientedBox box = runs.runBox[size_t(r)];
+				box.centre = ToWorld(rel, box.centre);
+				box.axis = Rotate(rel.q, box.axis);
+				boxLower = bounds->TightLevelLowerBound(box);
+			}
+			if (boxLower >= surface)
 				continue;
 		}
 		for (int k = m > 0 && index[m - 1] >= first ? index[m - 1] + 1 : first; k <= last; ++k)
