@@ -142,13 +142,10 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 			if (boxLower >= surface)
 				continue;
 		}
-		for (int k = m > 0 && index[m - 1] >= first ? index[m - 1] + 1 : first; k <= last; ++k)
-		{
-			if (k == n)
-				wrapsToZero = true;
-			else
-				index[m++] = k;
-		}
+		const int stop = std::min(last, n - 1);
+		for (int k = m > 0 && index[m - 1] >= first ? index[m - 1] + 1 : first; k <= stop; ++k)
+			index[m++] = k;
+		wrapsToZero = wrapsToZero || last == n;
 	}
 	if (wrapsToZero && !(m > 0 && index[0] == 0))
 	{
