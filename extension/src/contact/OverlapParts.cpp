@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -284,9 +285,28 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 			continue; // the caller's own part, discarded there, and taking no other's place
 		double lo, hi;
 		samples.NeighbourAngles(deepest, lo, hi);
-		auto levelAt = [&](double theta) { return outer.Level(ToWorld(rel, inner.SurfacePoint(theta))); };
+		// The surface point of the search's answer is kept as it is evaluated: Brent's x is the
+		// latest place whose level is at or below every earlier one (the rule below, NaN
+		// included), and a point kept for the same angle, bit for bit, is the one it would
+		// compute again.
+		double keptTheta = 0.0, keptLevel = 0.0;
+		Vec2 kept;
+		bool anyKept = false;
+		auto levelAt = [&](double theta) {
+			const Vec2 p = inner.SurfacePoint(theta);
+			const double value = outer.Level(ToWorld(rel, p));
+			if (!anyKept || value <= keptLevel)
+			{
+				keptTheta = theta;
+				keptLevel = value;
+				kept = p;
+				anyKept = true;
+			}
+			return value;
+		};
 		const ScalarResult mb = MinimizeBrent(levelAt, lo, hi, 1e-10, 1e-12, 60);
-		const Vec2 qi = inner.SurfacePoint(mb.x);
+		const bool sameTheta = anyKept && std::memcmp(&keptTheta, &mb.x, sizeof keptTheta) == 0;
+		const Vec2 qi = sameTheta ? kept : inner.SurfacePoint(mb.x);
 		const Vec2 q = ToWorld(rel, qi); // outer's body frame
 		const Vec2 g = outer.Gradient(q);
 		if (!(mb.fx < surface) || !(LengthSquared(g) > 0.0) || !std::isfinite(LengthSquared(g)))
