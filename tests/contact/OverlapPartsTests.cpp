@@ -157,7 +157,7 @@ TEST_CASE("OverlapParts: the grid solve's levels, reused, give the parts bit for
 	const double nan = std::numeric_limits<double>::quiet_NaN();
 	test::Random random(4402);
 	const double reach = a->BoundingRadius() + b->BoundingRadius();
-	int poses = 0, reusedLevels = 0, reusedBounds = 0, withParts = 0;
+	int poses = 0, reusedLevels = 0, reusedBounds = 0, scannedRuns = 0, reusedBoxes = 0, withParts = 0;
 	for (int tries = 0; tries < 4000 && poses < 300; ++tries)
 	{
 		const Pose pa(Vec2(0.0, 0.0), random.Angle());
@@ -202,6 +202,30 @@ TEST_CASE("OverlapParts: the grid solve's levels, reused, give the parts bit for
 			const double expected = std::max(own, known.groupBound[r / SampleRuns::kGroupRuns]);
 			REQUIRE(std::memcmp(&expected, &known.runBound[r], sizeof expected) == 0);
 		}
+		// A run the solve marks scanned has every level known, both ends included (OverlapParts
+		// then skips its box): checked against the stamps.
+		const int n = runs.samples->Count();
+		for (int r = 0; r < int(runs.runCentre.size()); ++r)
+		{
+			if (!known.scanned[r])
+				continue;
+			++scannedRuns;
+			const int first = r * SampleRuns::kRunLength, last = std::min(first + SampleRuns::kRunLength, n);
+			for (int k = first; k <= last; ++k)
+				REQUIRE(known.stamp[k == n ? 0 : k] == known.generation);
+		}
+		// The box bounds the solve took: A's TightLevelLowerBound over the run's box, bit for bit.
+		for (int r = 0; r < int(runs.runCentre.size()); ++r)
+		{
+			if (known.boxStamp[r] != known.generation)
+				continue;
+			++reusedBoxes;
+			OrientedBox box = runs.runBox[size_t(r)];
+			box.centre = ToWorld(rel, box.centre);
+			box.axis = Rotate(rel.q, box.axis);
+			const double own = a->Bounds()->TightLevelLowerBound(box);
+			REQUIRE(std::memcmp(&own, &known.boxBound[r], sizeof own) == 0);
+		}
 		// Keys that must not match: the sides swapped, the pose one ulp off.
 		GridLevels other;
 		CHECK_FALSE(LastGridLevels(*b, *a, rel, *runs.samples, &other));
@@ -222,6 +246,8 @@ TEST_CASE("OverlapParts: the grid solve's levels, reused, give the parts bit for
 	// Not vacuous: levels were reused on every pose, and parts found on most.
 	CHECK(reusedLevels >= poses);
 	CHECK(reusedBounds >= poses);
+	CHECK(scannedRuns >= poses);
+	CHECK(reusedBoxes > 0);
 	CHECK(withParts > poses / 2);
 	MESSAGE("poses " << poses << ", reused levels " << reusedLevels << ", reused run bounds " << reusedBounds << ", with parts " << withParts);
 }

@@ -388,6 +388,8 @@ struct GridScratch
 	std::vector<std::uint32_t> stamp; // value[k] is this call's where stamp[k] == generation
 	std::vector<std::uint32_t> raySolved; // segment k → k + 1's corner-ray crossing solved where == generation
 	std::vector<std::uint32_t> runStamp;  // bound[r] is this call's where runStamp[r] == generation
+	std::vector<double> boxBound;         // run r's box bound (Scan's last look), this call's where
+	std::vector<std::uint32_t> boxStamp;  // boxStamp[r] == generation
 	std::uint32_t generation = 0;
 	std::vector<char> scanned; // per run: evaluated whole
 	std::vector<int> scannedRuns; // those runs, in increasing order (bounded scans)
@@ -502,6 +504,8 @@ private:
 	std::uint32_t* stamp = nullptr;
 	std::uint32_t* raySolved = nullptr;
 	std::uint32_t* runStamp = nullptr;
+	double* boxBound = nullptr;
+	std::uint32_t* boxStamp = nullptr;
 	Vec2* inA = nullptr; // each evaluated sample in A's body frame
 	char* scanned = nullptr; // per run: evaluated whole
 	int* scannedRuns = nullptr; // those runs (in increasing order once sorted)
@@ -536,12 +540,14 @@ GridScan::GridScan(const Shape& a_, const Pose& pa_, const Shape& b_, const Pose
 		scratch.stamp.assign(n, 0);
 		scratch.raySolved.assign(n, 0);
 		scratch.runStamp.assign(runs, 0);
+		scratch.boxStamp.assign(runs, 0);
 		scratch.generation = 1;
 	}
 	generation = scratch.generation;
 	scratch.value.resize(n);
 	scratch.inA.resize(n);
 	scratch.bound.resize(runs);
+	scratch.boxBound.resize(runs);
 	scratch.groupBound.resize(groups);
 	scratch.discs.resize(std::max(groups, runs));
 	scratch.scanned.assign(runs, 0);
@@ -552,6 +558,8 @@ GridScan::GridScan(const Shape& a_, const Pose& pa_, const Shape& b_, const Pose
 	stamp = scratch.stamp.data();
 	raySolved = scratch.raySolved.data();
 	runStamp = scratch.runStamp.data();
+	boxBound = scratch.boxBound.data();
+	boxStamp = scratch.boxStamp.data();
 	inA = scratch.inA.data();
 	scanned = scratch.scanned.data();
 	scannedRuns = scratch.scannedRuns.data();
@@ -670,7 +678,9 @@ void GridScan::Scan()
 		OrientedBox box = hierarchy.runBox[g];
 		box.centre = ToWorld(walk.bInA, box.centre);
 		box.axis = Rotate(walk.bInA.q, box.axis);
-		if (boundsA->TightLevelLowerBound(box) > lowest)
+		boxBound[g] = boundsA->TightLevelLowerBound(box);
+		boxStamp[g] = generation;
+		if (boxBound[g] > lowest)
 			continue;
 		ScanRun(g);
 	}
@@ -902,6 +912,9 @@ bool LastGridLevels(const Shape& a, const Shape& b, const Pose& bInA, const Surf
 	out->groupBound = scratch.groupsBounded ? scratch.groupBound.data() : nullptr;
 	out->runBound = scratch.bound.data();
 	out->runStamp = scratch.runStamp.data();
+	out->scanned = scratch.scanned.data();
+	out->boxBound = scratch.boxBound.data();
+	out->boxStamp = scratch.boxStamp.data();
 	return true;
 }
 

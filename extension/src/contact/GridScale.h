@@ -27,6 +27,13 @@ struct GridLevels
 	/// A's lower bound over run r's disc, at least its group's, where runStamp[r] == generation.
 	const double* runBound = nullptr;
 	const std::uint32_t* runStamp = nullptr; ///< per run
+	/// Per run of B's SampleRuns: nonzero where the solve evaluated the run whole (every level of
+	/// its samples, both ends included, stamped).
+	const char* scanned = nullptr;
+	/// A's TightLevelLowerBound over run r's box (B's SampleRuns' runBox, in A's frame), where
+	/// boxStamp[r] == generation.
+	const double* boxBound = nullptr;
+	const std::uint32_t* boxStamp = nullptr; ///< per run
 };
 
 /// Where this thread's last grid solve (SolveGridScale, succeeded) rescaled A onto B's own

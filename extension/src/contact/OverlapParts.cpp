@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -121,27 +122,31 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 		const int first = runOf[j] * SampleRuns::kRunLength;
 		const int last = std::min(first + SampleRuns::kRunLength, n);
 		// The run's thin box, where its disc did not rule it out (as the grid method's last
-		// look before it evaluates a run), unless every level of the run is known already (the
-		// grid solve's): a run the box rules out is outside, and its levels, evaluated or +∞,
-		// order its samples the same against any sample inside.
-		bool allKnown = known != nullptr;
-		for (int k = first; k <= last && allKnown; ++k)
-			allKnown = known->stamp[k == n ? 0 : k] == known->generation;
-		if (!allKnown)
+		// look before it evaluates a run), unless the grid solve evaluated the run whole (every
+		// level of it known; with runs of eight samples no other run is known whole, its middle
+		// samples being evaluated by its own scan alone): a run the box rules out is outside, and
+		// its levels, evaluated or +∞, order its samples the same against any sample inside.
+		// (The grid solve's box bound where it took one: the same bound over the same box.)
+		const int r = runOf[j];
+		if (!(known && known->scanned[r]))
 		{
-			OrientedBox box = runs.runBox[size_t(runOf[j])];
-			box.centre = ToWorld(rel, box.centre);
-			box.axis = Rotate(rel.q, box.axis);
-			if (bounds->TightLevelLowerBound(box) >= surface)
+			double boxLower;
+			if (known && known->boxStamp[r] == known->generation)
+				boxLower = known->boxBound[r];
+			else
+			{
+				OrientedBox box = runs.runBox[size_t(r)];
+				box.centre = ToWorld(rel, box.centre);
+				box.axis = Rotate(rel.q, box.axis);
+				boxLower = bounds->TightLevelLowerBound(box);
+			}
+			if (boxLower >= surface)
 				continue;
 		}
-		for (int k = m > 0 && index[m - 1] >= first ? index[m - 1] + 1 : first; k <= last; ++k)
-		{
-			if (k == n)
-				wrapsToZero = true;
-			else
-				index[m++] = k;
-		}
+		const int stop = std::min(last, n - 1);
+		for (int k = m > 0 && index[m - 1] >= first ? index[m - 1] + 1 : first; k <= stop; ++k)
+			index[m++] = k;
+		wrapsToZero = wrapsToZero || last == n;
 	}
 	if (wrapsToZero && !(m > 0 && index[0] == 0))
 	{
@@ -280,9 +285,28 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 			continue; // the caller's own part, discarded there, and taking no other's place
 		double lo, hi;
 		samples.NeighbourAngles(deepest, lo, hi);
-		auto levelAt = [&](double theta) { return outer.Level(ToWorld(rel, inner.SurfacePoint(theta))); };
+		// The surface point of the search's answer is kept as it is evaluated: Brent's x is the
+		// latest place whose level is at or below every earlier one (the rule below, NaN
+		// included), and a point kept for the same angle, bit for bit, is the one it would
+		// compute again.
+		double keptTheta = 0.0, keptLevel = 0.0;
+		Vec2 kept;
+		bool anyKept = false;
+		auto levelAt = [&](double theta) {
+			const Vec2 p = inner.SurfacePoint(theta);
+			const double value = outer.Level(ToWorld(rel, p));
+			if (!anyKept || value <= keptLevel)
+			{
+				keptTheta = theta;
+				keptLevel = value;
+				kept = p;
+				anyKept = true;
+			}
+			return value;
+		};
 		const ScalarResult mb = MinimizeBrent(levelAt, lo, hi, 1e-10, 1e-12, 60);
-		const Vec2 qi = inner.SurfacePoint(mb.x);
+		const bool sameTheta = anyKept && std::memcmp(&keptTheta, &mb.x, sizeof keptTheta) == 0;
+		const Vec2 qi = sameTheta ? kept : inner.SurfacePoint(mb.x);
 		const Vec2 q = ToWorld(rel, qi); // outer's body frame
 		const Vec2 g = outer.Gradient(q);
 		if (!(mb.fx < surface) || !(LengthSquared(g) > 0.0) || !std::isfinite(LengthSquared(g)))
