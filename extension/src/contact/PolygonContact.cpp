@@ -18,15 +18,16 @@ namespace b2a
 
 namespace
 {
-// The 16 directions kπ/8 that every wall contact tries, computed once: the same values as
-// computing them at each call, without 32 libm calls a contact (and the angle of the best
-// direction is taken once, after the candidates, not at each improvement).
+// The 16 directions kπ/8 that every wall contact tries, computed once and normalised as each
+// candidate is (`consider`): the same values as computing them at each call, without 32 libm
+// calls, a square root and two divisions each a contact (and the angle of the best direction is
+// taken once, after the candidates, not at each improvement).
 const std::array<Vec2, 16>& EvenDirections()
 {
 	static const std::array<Vec2, 16> directions = [] {
 		std::array<Vec2, 16> d;
 		for (int k = 0; k < 16; ++k)
-			d[k] = Vec2(std::cos(kPi * k / 8.0), std::sin(kPi * k / 8.0));
+			d[k] = Normalize(Vec2(std::cos(kPi * k / 8.0), std::sin(kPi * k / 8.0)));
 		return d;
 	}();
 	return directions;
@@ -85,10 +86,14 @@ ContactResult SeparatingAxisContact(const Shape& a, const Pose& pa, const Vec2* 
 	// result is the one without the skip, bit for bit.
 	const bool cheapBounds = typeid(a) == typeid(SuperellipseShape) || typeid(a) == typeid(HeartShape);
 	const double radius = a.BoundingRadius();
-	auto consider = [&](Vec2 n, int face) {
-		if (!(LengthSquared(n) > 0.0) || !IsFinite(n))
-			return;
-		n = Normalize(n);
+	// `unit`: n is already a unit vector as Normalize leaves it (the even directions).
+	auto consider = [&](Vec2 n, int face, bool unit) {
+		if (!unit)
+		{
+			if (!(LengthSquared(n) > 0.0) || !IsFinite(n))
+				return;
+			n = Normalize(n);
+		}
 		if (cheapBounds && std::isfinite(best))
 		{
 			double lower = 0.0, upper = 0.0;
@@ -109,22 +114,28 @@ ContactResult SeparatingAxisContact(const Shape& a, const Pose& pa, const Vec2* 
 	};
 	// Face normals (pointing into B from A's side: minus the outward normal), both sides of a
 	// segment, the directions to the vertices and to the centroid, a guess, and even directions.
+	// A segment's second edge is its first reversed (w0 − w1 = −(w1 − w0) exactly): its two normals
+	// are the first edge's two, to the bit, and an equal gap never replaces the best (g > best),
+	// so they are tried once.
 	Vec2 centroid;
 	for (int j = 0; j < count; ++j)
 	{
-		const Vec2 e = w[(j + 1) % count] - w[j];
-		const Vec2 outward(e.y, -e.x);
-		consider(-outward, j);
-		if (count == 2)
-			consider(outward, j);
-		consider(w[j] - pa.p, -1);
+		if (count > 2 || j == 0)
+		{
+			const Vec2 e = w[(j + 1) % count] - w[j];
+			const Vec2 outward(e.y, -e.x);
+			consider(-outward, j, false);
+			if (count == 2)
+				consider(outward, j, false);
+		}
+		consider(w[j] - pa.p, -1, false);
 		centroid += w[j] / double(count);
 	}
-	consider(centroid - pa.p, -1);
+	consider(centroid - pa.p, -1, false);
 	if (guessNormal)
-		consider(*guessNormal, -1);
+		consider(*guessNormal, -1, false);
 	for (const Vec2& n : EvenDirections())
-		consider(n, -1);
+		consider(n, -1, true);
 	double bestAngle = std::atan2(bestNormal.y, bestNormal.x);
 	// A face normal that is a local maximum needs no refinement: a particle resting on a wall.
 	// With t = n' (the normal turned by +90°), the gap's one-sided derivatives there are
