@@ -17,6 +17,34 @@
 using namespace b2a;
 using namespace b2a::test;
 
+namespace
+{
+// The far crossing of f = 1 by the line x + u·d in long double: the lowest point of the convex f
+// along the line (golden sections over ±4 sizes), then bisection of f − 1 towards 4 sizes beyond.
+// Requires the lowest point inside (f < 1).
+long double ReferenceFarCrossing(const SuperellipseShape& s, Vec2 x, Vec2 d)
+{
+	const long double a = s.A(), b = s.B(), n = s.N(), m = s.M(), size = std::max(s.A(), s.B());
+	auto along = [&](long double u) {
+		return std::pow(std::fabs((x.x + u * d.x) / a), n) + std::pow(std::fabs((x.y + u * d.y) / b), m);
+	};
+	long double lo = -4.0L * size, hi = 4.0L * size;
+	for (int k = 0; k < 300; ++k)
+	{
+		const long double m1 = lo + (hi - lo) * 0.381966L, m2 = hi - (hi - lo) * 0.381966L;
+		(along(m1) < along(m2) ? hi : lo) = (along(m1) < along(m2) ? m2 : m1);
+	}
+	long double inside = 0.5L * (lo + hi), beyond = 4.0L * size;
+	REQUIRE(along(inside) < 1.0L);
+	for (int k = 0; k < 300; ++k)
+	{
+		const long double mid = 0.5L * (inside + beyond);
+		(along(mid) < 1.0L ? inside : beyond) = mid;
+	}
+	return inside;
+}
+} // namespace
+
 TEST_CASE("superellipse terms: IntegerSuperellipseDerivatives is RawSuperellipseDerivatives, bit for bit, for integer exponents")
 {
 	// The same operations in the same order: every value equal, at random points of both signs,
@@ -138,8 +166,6 @@ TEST_CASE("superellipse terms: SmoothFarCrossing's Halley steps land on the far 
 	{
 		CAPTURE(s->Describe());
 		const SuperellipseTerms& terms = s->Terms();
-		const long double a = s->A(), b = s->B(), n = s->N(), m = s->M();
-		auto level = [&](long double x, long double y) { return std::pow(std::fabs(x / a), n) + std::pow(std::fabs(y / b), m); };
 		const double size = std::max(s->A(), s->B()), unit = std::min(s->A(), s->B());
 		for (int i = 0; i < 300; ++i)
 		{
@@ -159,23 +185,7 @@ TEST_CASE("superellipse terms: SmoothFarCrossing's Halley steps land on the far 
 				continue;
 			}
 			++found;
-			// The reference: the lowest point of the convex f along the line (golden sections), then
-			// bisection towards far beyond.
-			auto along = [&](long double u) { return level(x.x + u * d.x, x.y + u * d.y); };
-			long double lo = -4.0L * size, hi = 4.0L * size;
-			for (int k = 0; k < 300; ++k)
-			{
-				const long double m1 = lo + (hi - lo) * 0.381966L, m2 = hi - (hi - lo) * 0.381966L;
-				(along(m1) < along(m2) ? hi : lo) = (along(m1) < along(m2) ? m2 : m1);
-			}
-			long double inside = 0.5L * (lo + hi), beyond = 4.0L * size;
-			REQUIRE(along(inside) < 1.0L);
-			for (int k = 0; k < 300; ++k)
-			{
-				const long double mid = 0.5L * (inside + beyond);
-				(along(mid) < 1.0L ? inside : beyond) = mid;
-			}
-			worst = std::max(worst, double(std::fabs(inside - t)) / size);
+			worst = std::max(worst, double(std::fabs(ReferenceFarCrossing(*s, x, d) - t)) / size);
 		}
 	}
 	CAPTURE(worst);
@@ -206,8 +216,6 @@ TEST_CASE("superellipse terms: SmoothFarCrossingFrom agrees with SuperellipseFar
 	{
 		CAPTURE(s->Describe());
 		const SuperellipseTerms& terms = s->Terms();
-		const long double a = s->A(), b = s->B(), n = s->N(), m = s->M();
-		auto level = [&](long double x, long double y) { return std::pow(std::fabs(x / a), n) + std::pow(std::fabs(y / b), m); };
 		const double size = std::max(s->A(), s->B()), unit = std::min(s->A(), s->B());
 		for (int i = 0; i < 1000; ++i)
 		{
@@ -226,23 +234,7 @@ TEST_CASE("superellipse terms: SmoothFarCrossingFrom agrees with SuperellipseFar
 				++both;
 				worstOld = std::max(worstOld, std::fabs(tNew - tOld) / size);
 			}
-			// The reference: bisection of f − 1 from inside (the line's lowest f, golden sections)
-			// towards far beyond.
-			auto along = [&](long double u) { return level(x.x + u * d.x, x.y + u * d.y); };
-			long double lo = -4.0L * size, hi = 4.0L * size;
-			for (int k = 0; k < 300; ++k)
-			{
-				const long double m1 = lo + (hi - lo) * 0.381966L, m2 = hi - (hi - lo) * 0.381966L;
-				(along(m1) < along(m2) ? hi : lo) = (along(m1) < along(m2) ? m2 : m1);
-			}
-			long double inside = 0.5L * (lo + hi), beyond = 4.0L * size;
-			REQUIRE(along(inside) < 1.0L);
-			for (int k = 0; k < 300; ++k)
-			{
-				const long double mid = 0.5L * (inside + beyond);
-				(along(mid) < 1.0L ? inside : beyond) = mid;
-			}
-			worstReference = std::max(worstReference, double(std::fabs(inside - tNew)) / size);
+			worstReference = std::max(worstReference, double(std::fabs(ReferenceFarCrossing(*s, x, d) - tNew)) / size);
 		}
 	}
 	CAPTURE(worstOld);
