@@ -1,7 +1,8 @@
 // The superellipse's inline terms (geometry/SuperellipseTerms.h): IntegerSuperellipseDerivatives
 // and SmoothSuperellipseDerivatives against RawSuperellipseDerivatives and against the closed
 // forms in long double, and SmoothFarCrossing (the Halley steps of the raw-level finish) against
-// long-double bisection along the line, for integer and real exponents.
+// long-double bisection along the line, for integer and real exponents, and SmoothFarCrossingFrom
+// (the manifold's face-point crossing) against SuperellipseFarCrossing and the same reference.
 #include <doctest/doctest.h>
 
 #include "TestSupport.h"
@@ -15,6 +16,34 @@
 
 using namespace b2a;
 using namespace b2a::test;
+
+namespace
+{
+// The far crossing of f = 1 by the line x + u·d in long double: the lowest point of the convex f
+// along the line (golden sections over ±4 sizes), then bisection of f − 1 towards 4 sizes beyond.
+// Requires the lowest point inside (f < 1).
+long double ReferenceFarCrossing(const SuperellipseShape& s, Vec2 x, Vec2 d)
+{
+	const long double a = s.A(), b = s.B(), n = s.N(), m = s.M(), size = std::max(s.A(), s.B());
+	auto along = [&](long double u) {
+		return std::pow(std::fabs((x.x + u * d.x) / a), n) + std::pow(std::fabs((x.y + u * d.y) / b), m);
+	};
+	long double lo = -4.0L * size, hi = 4.0L * size;
+	for (int k = 0; k < 300; ++k)
+	{
+		const long double m1 = lo + (hi - lo) * 0.381966L, m2 = hi - (hi - lo) * 0.381966L;
+		(along(m1) < along(m2) ? hi : lo) = (along(m1) < along(m2) ? m2 : m1);
+	}
+	long double inside = 0.5L * (lo + hi), beyond = 4.0L * size;
+	REQUIRE(along(inside) < 1.0L);
+	for (int k = 0; k < 300; ++k)
+	{
+		const long double mid = 0.5L * (inside + beyond);
+		(along(mid) < 1.0L ? inside : beyond) = mid;
+	}
+	return inside;
+}
+} // namespace
 
 TEST_CASE("superellipse terms: IntegerSuperellipseDerivatives is RawSuperellipseDerivatives, bit for bit, for integer exponents")
 {
@@ -137,8 +166,6 @@ TEST_CASE("superellipse terms: SmoothFarCrossing's Halley steps land on the far 
 	{
 		CAPTURE(s->Describe());
 		const SuperellipseTerms& terms = s->Terms();
-		const long double a = s->A(), b = s->B(), n = s->N(), m = s->M();
-		auto level = [&](long double x, long double y) { return std::pow(std::fabs(x / a), n) + std::pow(std::fabs(y / b), m); };
 		const double size = std::max(s->A(), s->B()), unit = std::min(s->A(), s->B());
 		for (int i = 0; i < 300; ++i)
 		{
@@ -158,23 +185,7 @@ TEST_CASE("superellipse terms: SmoothFarCrossing's Halley steps land on the far 
 				continue;
 			}
 			++found;
-			// The reference: the lowest point of the convex f along the line (golden sections), then
-			// bisection towards far beyond.
-			auto along = [&](long double u) { return level(x.x + u * d.x, x.y + u * d.y); };
-			long double lo = -4.0L * size, hi = 4.0L * size;
-			for (int k = 0; k < 300; ++k)
-			{
-				const long double m1 = lo + (hi - lo) * 0.381966L, m2 = hi - (hi - lo) * 0.381966L;
-				(along(m1) < along(m2) ? hi : lo) = (along(m1) < along(m2) ? m2 : m1);
-			}
-			long double inside = 0.5L * (lo + hi), beyond = 4.0L * size;
-			REQUIRE(along(inside) < 1.0L);
-			for (int k = 0; k < 300; ++k)
-			{
-				const long double mid = 0.5L * (inside + beyond);
-				(along(mid) < 1.0L ? inside : beyond) = mid;
-			}
-			worst = std::max(worst, double(std::fabs(inside - t)) / size);
+			worst = std::max(worst, double(std::fabs(ReferenceFarCrossing(*s, x, d) - t)) / size);
 		}
 	}
 	CAPTURE(worst);
@@ -182,6 +193,64 @@ TEST_CASE("superellipse terms: SmoothFarCrossing's Halley steps land on the far 
 	CHECK(worst <= 1e-13);
 	CHECK(found >= 2800); // measured: all 3000, to 8.9e-16 of the size
 	CHECK(declined <= found / 100);
+}
+
+TEST_CASE("superellipse terms: SmoothFarCrossingFrom agrees with SuperellipseFarCrossing and long-double bisection")
+{
+	// The manifold's case (LowestAlong): a face point near the surface, within a tenth of the
+	// size either way, and a line through it tilted by up to 0.6 rad from the surface's normal
+	// (a face normal of the other particle), sometimes entering the particle sideways. Both the
+	// Halley crossing from one evaluation and the Newton one on f^(1/p) it replaced must answer
+	// alike: found or not for the same lines, and where found within 1e-14 of the size of each
+	// other and of the long-double reference.
+	const std::vector<std::shared_ptr<SuperellipseShape>> shapes = {
+		std::make_shared<SuperellipseShape>(1.0, 0.6, 4.0, 4.0), std::make_shared<SuperellipseShape>(0.01, 0.01, 4.0, 4.0),
+		std::make_shared<SuperellipseShape>(2.0, 0.5, 8.0, 8.0), std::make_shared<SuperellipseShape>(1.0, 0.5, 4.0, 8.0),
+		std::make_shared<SuperellipseShape>(0.8, 1.0, 12.0, 12.0), std::make_shared<SuperellipseShape>(1.0, 0.7, 3.0, 5.0),
+		std::make_shared<SuperellipseShape>(1.0, 0.6, 2.5, 2.5), std::make_shared<SuperellipseShape>(1.2, 0.5, 3.7, 3.7),
+		std::make_shared<SuperellipseShape>(0.9, 0.6, 5.3, 2.8), std::make_shared<SuperellipseShape>(1.0, 1.0, 2.2, 4.6)};
+	Random rng(44);
+	int found = 0, both = 0;
+	double worstOld = 0.0, worstReference = 0.0;
+	for (const auto& s : shapes)
+	{
+		CAPTURE(s->Describe());
+		const SuperellipseTerms& terms = s->Terms();
+		const double size = std::max(s->A(), s->B()), unit = std::min(s->A(), s->B());
+		for (int i = 0; i < 1000; ++i)
+		{
+			const Vec2 q = s->SurfacePoint(rng.Angle());
+			const Vec2 d = Rotate(Rot(rng.Uniform(-0.6, 0.6)), Normalize(s->Gradient(q)));
+			const Vec2 x = q + rng.Uniform(-0.1, 0.1) * size * d;
+			double tNew = 0.0, tOld = 0.0;
+			const bool gotNew = SmoothFarCrossingFrom(terms, x, d, unit, tNew);
+			const bool gotOld = SuperellipseFarCrossing(terms, x, d, tOld);
+			CHECK(gotNew == gotOld);
+			if (!gotNew)
+				continue;
+			++found;
+			if (gotOld)
+			{
+				++both;
+				worstOld = std::max(worstOld, std::fabs(tNew - tOld) / size);
+			}
+			worstReference = std::max(worstReference, double(std::fabs(ReferenceFarCrossing(*s, x, d) - tNew)) / size);
+		}
+	}
+	CAPTURE(worstOld);
+	CAPTURE(worstReference);
+	CAPTURE(found);
+	CHECK(found >= 9900);
+	CHECK(both == found);
+	CHECK(worstOld <= 1e-14);
+	CHECK(worstReference <= 1e-14); // measured: 1.1e-15 of the size, all 10,000 found
+	// Where the Halley steps decline, SuperellipseFarCrossing decides: a line passing above the
+	// particle misses it; one moving inwards from outside (f' < 0) has its far crossing at x = −1.
+	const SuperellipseShape s(1.0, 0.6, 4.0, 4.0);
+	double t = 0.0;
+	CHECK_FALSE(SmoothFarCrossingFrom(s.Terms(), Vec2(0.2, 0.9), Vec2(1.0, 0.0), 0.6, t));
+	REQUIRE(SmoothFarCrossingFrom(s.Terms(), Vec2(1.5, 0.0), Vec2(-1.0, 0.0), 0.6, t));
+	CHECK(std::fabs(t - 2.5) <= 1e-15);
 }
 
 TEST_CASE("superellipse terms: SmoothFarCrossing declines a line that misses the particle or runs inwards")

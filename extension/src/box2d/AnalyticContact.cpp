@@ -273,13 +273,132 @@ inline double AnalyticContact::HoldGap() const
 	return m_nonConvex ? kNonConvexHoldGap : kContactHoldGap;
 }
 
+// (Forced inline: GCC keeps it out of line, and its call then takes the poses through memory at
+// every evaluation.)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline bool AnalyticContact::PairApart(const Pose& poseA, const Pose& poseB)
+{
+	// Bounding circles apart: no contact, and no solve. The tight AABBs of the broad phase
+	// overlap for many pairs whose particles are apart (elongated ones especially).
+	const Shape& shapeA = *m_sideA.shape;
+	const Shape& shapeB = *m_sideB.shape;
+	const double reach = m_sideA.radius + m_sideB.radius + (IsTouching() ? HoldGap() : 0.0);
+	const Vec2 between = poseB.p - poseA.p;
+	if (LengthSquared(between) > reach * reach)
+	{
+		m_wasTouching = false;
+		return true;
+	}
+	// Separating axes before the solve: the last normal this contact found (the exact
+	// separating direction then, and still one while the pair drifts apart or rests apart),
+	// then the line between the centres. In a granular scene many of the pairs that reach
+	// this point are apart, and most of them stop here. Their warm start is kept.
+	// Not for a pair the last solve found touching: it almost always still touches, and then
+	// both axes fail, after the exact support values wherever the shape's bounds are loose (a
+	// superellipse n = 4 touches in its bounds' gap), at more cost than the few solves of
+	// pairs that came apart. Such a pair's solve tells it as exactly (separation > 0: no
+	// points).
+	if (m_wasTouching)
+		return false;
+	if (m_hasNormal && SeparatedAlong(shapeA, poseA, shapeB, poseB, m_lastNormal))
+		return true;
+	const double distance = Length(between);
+	return distance > 0.0 && SeparatedAlong(shapeA, poseA, shapeB, poseB, between / distance);
+}
+
+ContactResult AnalyticContact::PlainSideContact(const Pose& bodyA, const Pose& bodyB, ManifoldSide& sideA, ManifoldSide& sideB,
+                                                double& radii, Vec2* vertices)
+{
+	if (m_sideA.shape && m_kind == Kind::polygonCircle)
+	{
+		// Analytic against a Box2D circle: the circle as an analytic circle at its centre, whose
+		// pair the dispatch table decides as any other. Box2D subtracts the circle's radius
+		// itself, so B's manifold point is the centre.
+		if (!m_circle)
+			return {};
+		const b2CircleShape* circle = static_cast<const b2CircleShape*>(m_fixtureB->GetShape());
+		const Pose poseA = Compose(bodyA, m_sideA.local);
+		const Pose poseC(ToWorld(bodyB, V(circle->m_p)), bodyB.q);
+		ContactResult c = ComputeContact(*m_sideA.shape, poseA, *m_circle, poseC, MethodChoice::automatic, Solver(), &m_warm);
+		if (!c.Ok())
+			return c;
+		c.pointB = poseC.p;
+		radii = circle->m_radius;
+		sideA = {m_sideA.shape, poseA};
+		sideB.point = true;
+		return c;
+	}
+	// One analytic side against a Box2D polygon, edge or chain link: its core geometry's
+	// vertices to the dispatch table's polygon column (ComputePolygonContact); Box2D adds the
+	// skin radius.
+	const bool analyticIsA = m_sideA.shape != nullptr;
+	const Side& proxy = analyticIsA ? m_sideA : m_sideB;
+	const b2Shape* sa = m_fixtureA->GetShape();
+	const b2Shape* plain = analyticIsA ? m_fixtureB->GetShape() : sa;
+	const Pose poseAnalytic = Compose(analyticIsA ? bodyA : bodyB, proxy.local);
+	const Pose posePlain = analyticIsA ? bodyB : bodyA;
+	int count = 0;
+	if (m_kind == Kind::polygonPolygon)
+	{
+		count = PolygonVertices(static_cast<const b2PolygonShape*>(plain), vertices);
+	}
+	else
+	{
+		b2EdgeShape edge;
+		if (m_kind == Kind::chainPolygon)
+			static_cast<const b2ChainShape*>(sa)->GetChildEdge(&edge, m_indexA);
+		else
+			edge = *static_cast<const b2EdgeShape*>(sa);
+		vertices[0] = V(edge.m_vertex1);
+		vertices[1] = V(edge.m_vertex2);
+		count = 2;
+		if (edge.m_oneSided)
+		{
+			// One-sided edges (chain links) collide only with particles whose centroid lies on
+			// their right side, as Box2D decides for its polygons (b2CollideEdgeAndPolygon). The
+			// centroid, not the shape's origin: a heart's origin lies well below its centroid.
+			const Vec2 e = vertices[1] - vertices[0];
+			const Vec2 front(e.y, -e.x);
+			const Vec2 centroid = ToWorld(poseAnalytic, proxy.shape->Mass().centroid);
+			if (Dot(ToBody(posePlain, centroid) - vertices[0], front) < 0.0)
+				return {};
+		}
+	}
+	const Vec2* guess = m_hasNormal ? &m_lastNormal : nullptr;
+	ContactResult c = ComputePolygonContact(*proxy.shape, poseAnalytic, vertices, count, posePlain, guess);
+	if (!c.Ok())
+		return c;
+	m_lastNormal = c.normal;
+	m_hasNormal = true;
+	for (int j = 0; j < count; ++j)
+		vertices[j] = ToWorld(posePlain, vertices[j]);
+	radii = plain->m_radius;
+	ManifoldSide analytic{proxy.shape, poseAnalytic};
+	ManifoldSide polygon;
+	polygon.vertices = vertices;
+	polygon.count = count;
+	if (analyticIsA)
+	{
+		sideA = analytic;
+		sideB = polygon;
+	}
+	else
+	{
+		c = FlipContact(c);
+		sideA = polygon;
+		sideB = analytic;
+	}
+	return c;
+}
+
 void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB)
 {
 	const Side& pa = m_sideA;
 	const Side& pb = m_sideB;
 	manifold->pointCount = 0;
 	const Pose bodyA = ToPose(xfA), bodyB = ToPose(xfB);
-	ContactResult c;
 	ManifoldSide sideA, sideB;
 	double radii = 0.0;
 	// The plain polygon's world vertices, for the polygon branch alone: left uninitialised (Vec2
@@ -291,129 +410,27 @@ void AnalyticContact::EvaluateAnalytic(b2Manifold* manifold, const b2Transform& 
 	} vertexBuffer;
 	Vec2* const vertices = vertexBuffer.v;
 
-	if (pa.shape && pb.shape)
+	// Analytic against analytic: the contact core, warm-started from the last step, unless the
+	// bounds part the pair first. Else one analytic side against a Box2D circle, polygon, edge or
+	// chain link. The result is built in c itself (a returned prvalue, a conditional of two
+	// initialises c directly): a result constructed first and assigned after cost its
+	// construction and a copy at every evaluation.
+	const bool pair = pa.shape && pb.shape;
+	const Pose poseA = pair ? Compose(bodyA, pa.local) : bodyA, poseB = pair ? Compose(bodyB, pb.local) : bodyB;
+	if (pair && PairApart(poseA, poseB))
+		return;
+	ContactResult c = pair ? ComputeContact(*pa.shape, poseA, *pb.shape, poseB, MethodChoice::automatic, Solver(), &m_warm)
+	                       : PlainSideContact(bodyA, bodyB, sideA, sideB, radii, vertices);
+	if (pair)
 	{
-		// Analytic against analytic: the contact core, warm-started from the last step.
-		const Pose poseA = Compose(bodyA, pa.local), poseB = Compose(bodyB, pb.local);
-		// Bounding circles apart: no contact, and no solve. The tight AABBs of the broad phase
-		// overlap for many pairs whose particles are apart (elongated ones especially).
-		const Shape& shapeA = *pa.shape;
-		const Shape& shapeB = *pb.shape;
-		const double hold = HoldGap();
-		const double reach = pa.radius + pb.radius + (IsTouching() ? hold : 0.0);
-		const Vec2 between = poseB.p - poseA.p;
-		if (LengthSquared(between) > reach * reach)
-		{
-			m_wasTouching = false;
-			return;
-		}
-		// Separating axes before the solve: the last normal this contact found (the exact
-		// separating direction then, and still one while the pair drifts apart or rests apart),
-		// then the line between the centres. In a granular scene many of the pairs that reach
-		// this point are apart, and most of them stop here. Their warm start is kept.
-		// Not for a pair the last solve found touching: it almost always still touches, and then
-		// both axes fail, after the exact support values wherever the shape's bounds are loose (a
-		// superellipse n = 4 touches in its bounds' gap), at more cost than the few solves of
-		// pairs that came apart. Such a pair's solve tells it as exactly (separation > 0: no
-		// points).
-		if (!m_wasTouching)
-		{
-			if (m_hasNormal && SeparatedAlong(shapeA, poseA, shapeB, poseB, m_lastNormal))
-				return;
-			const double distance = Length(between);
-			if (distance > 0.0 && SeparatedAlong(shapeA, poseA, shapeB, poseB, between / distance))
-				return;
-		}
-		c = ComputeContact(shapeA, poseA, shapeB, poseB, MethodChoice::automatic, Solver(), &m_warm);
-		m_wasTouching = c.Ok() && c.separation <= hold;
+		m_wasTouching = c.Ok() && c.separation <= HoldGap();
 		if (c.Ok())
 		{
 			m_lastNormal = c.normal;
 			m_hasNormal = true;
 		}
-		sideA = {&shapeA, poseA};
-		sideB = {&shapeB, poseB};
-	}
-	else if (pa.shape && m_kind == Kind::polygonCircle)
-	{
-		// Analytic against a Box2D circle: the circle as an analytic circle at its centre, whose
-		// pair the dispatch table decides as any other. Box2D subtracts the circle's radius
-		// itself, so B's manifold point is the centre.
-		if (!m_circle)
-			return;
-		const b2CircleShape* circle = static_cast<const b2CircleShape*>(m_fixtureB->GetShape());
-		const Pose poseA = Compose(bodyA, pa.local);
-		const Pose poseC(ToWorld(bodyB, V(circle->m_p)), bodyB.q);
-		c = ComputeContact(*pa.shape, poseA, *m_circle, poseC, MethodChoice::automatic, Solver(), &m_warm);
-		if (!c.Ok())
-			return;
-		c.pointB = poseC.p;
-		radii = circle->m_radius;
 		sideA = {pa.shape, poseA};
-		sideB.point = true;
-	}
-	else
-	{
-		// One analytic side against a Box2D polygon, edge or chain link: its core geometry's
-		// vertices to the dispatch table's polygon column (ComputePolygonContact); Box2D adds the
-		// skin radius.
-		const bool analyticIsA = pa.shape != nullptr;
-		const Side& proxy = analyticIsA ? pa : pb;
-		const b2Shape* sa = m_fixtureA->GetShape();
-		const b2Shape* plain = analyticIsA ? m_fixtureB->GetShape() : sa;
-		const Pose poseAnalytic = Compose(analyticIsA ? bodyA : bodyB, proxy.local);
-		const Pose posePlain = analyticIsA ? bodyB : bodyA;
-		int count = 0;
-		if (m_kind == Kind::polygonPolygon)
-		{
-			count = PolygonVertices(static_cast<const b2PolygonShape*>(plain), vertices);
-		}
-		else
-		{
-			b2EdgeShape edge;
-			if (m_kind == Kind::chainPolygon)
-				static_cast<const b2ChainShape*>(sa)->GetChildEdge(&edge, m_indexA);
-			else
-				edge = *static_cast<const b2EdgeShape*>(sa);
-			vertices[0] = V(edge.m_vertex1);
-			vertices[1] = V(edge.m_vertex2);
-			count = 2;
-			if (edge.m_oneSided)
-			{
-				// One-sided edges (chain links) collide only with particles whose centroid lies on
-				// their right side, as Box2D decides for its polygons (b2CollideEdgeAndPolygon). The
-				// centroid, not the shape's origin: a heart's origin lies well below its centroid.
-				const Vec2 e = vertices[1] - vertices[0];
-				const Vec2 front(e.y, -e.x);
-				const Vec2 centroid = ToWorld(poseAnalytic, proxy.shape->Mass().centroid);
-				if (Dot(ToBody(posePlain, centroid) - vertices[0], front) < 0.0)
-					return;
-			}
-		}
-		const Vec2* guess = m_hasNormal ? &m_lastNormal : nullptr;
-		c = ComputePolygonContact(*proxy.shape, poseAnalytic, vertices, count, posePlain, guess);
-		if (!c.Ok())
-			return;
-		m_lastNormal = c.normal;
-		m_hasNormal = true;
-		for (int j = 0; j < count; ++j)
-			vertices[j] = ToWorld(posePlain, vertices[j]);
-		radii = plain->m_radius;
-		ManifoldSide analytic{proxy.shape, poseAnalytic};
-		ManifoldSide polygon;
-		polygon.vertices = vertices;
-		polygon.count = count;
-		if (analyticIsA)
-		{
-			sideA = analytic;
-			sideB = polygon;
-		}
-		else
-		{
-			c = FlipContact(c);
-			sideA = polygon;
-			sideB = analytic;
-		}
+		sideB = {pb.shape, poseB};
 	}
 	if (!c.Ok())
 		return; // a failed solve (never NaN) gives no contact this step

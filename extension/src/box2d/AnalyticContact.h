@@ -48,6 +48,14 @@ private:
 	void EvaluatePlain(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB);
 	// The analytic path (at least one analytic fixture).
 	void EvaluateAnalytic(b2Manifold* manifold, const b2Transform& xfA, const b2Transform& xfB);
+	// Two analytic particles at these poses parted by their bounding circles or a separating
+	// axis (then no solve); where the circles part them, the contact no longer touches.
+	bool PairApart(const Pose& poseA, const Pose& poseB);
+	// One analytic side against a plain circle, polygon, edge or chain link: the contact, the
+	// manifold's sides and radii, the plain polygon's world vertices in `vertices`; a failed
+	// result where there is none.
+	ContactResult PlainSideContact(const Pose& bodyA, const Pose& bodyB, ManifoldSide& sideA, ManifoldSide& sideB, double& radii,
+	                               Vec2* vertices);
 
 	// An analytic fixture's data as the contact needs it, copied when Box2D creates the contact:
 	// a fixture's analytic data never changes and outlives its contacts, and reading it through

@@ -326,6 +326,19 @@ inline bool SmoothFarCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const 
 	return c.state == SmoothCrossing::State::found;
 }
 
+/// The far crossing of f = 1 by the body line x + t·d for exponents ≥ 2 (SmoothExponents) from
+/// x alone: f, f' and f'' at x from one evaluation (SmoothSuperellipseDerivatives), then
+/// SmoothFarCrossing's Halley steps (one division a step, where SuperellipseFarCrossing's Newton
+/// on f^(1/p) takes a root and two divisions); where they decline, SuperellipseFarCrossing from
+/// the same f and f'. `unit` as SmoothFarCrossing's (the smaller semi-axis). For a point within
+/// a small fraction of the size of the surface (a face point of a contact manifold).
+inline bool SmoothFarCrossingFrom(const SuperellipseTerms& s, Vec2 x, Vec2 d, double unit, double& t)
+{
+	const AxisDerivatives e = SmoothSuperellipseDerivatives(s, x.x, x.y);
+	const double known[3] = {e.f, e.gx * d.x + e.gy * d.y, d.x * d.x * e.hx + d.y * d.y * e.hy};
+	return SmoothFarCrossing(s, x, d, known, unit, t) || SuperellipseFarCrossing(s, x, d, t, known);
+}
+
 /// Two independent crossings, interleaved a step at a time (up to 8 steps each); each ends found
 /// or failed, with the same steps and the same answer as when run alone.
 inline void SmoothFarCrossings(SmoothCrossing& a, SmoothCrossing& b)
