@@ -19,6 +19,18 @@ using namespace b2a::test;
 
 namespace
 {
+// The crossing tests' shapes: integer exponents, equal and unequal, and real ones (one std::pow
+// per axis and step), one of them in (2, 3), where g''' is unbounded at an axis; plus the test's
+// own shape of axes a, b and exponents n, m.
+std::vector<std::shared_ptr<SuperellipseShape>> CrossingShapes(double a, double b, double n, double m)
+{
+	return {std::make_shared<SuperellipseShape>(1.0, 0.6, 4.0, 4.0), std::make_shared<SuperellipseShape>(a, b, n, m),
+	        std::make_shared<SuperellipseShape>(2.0, 0.5, 8.0, 8.0), std::make_shared<SuperellipseShape>(1.0, 0.5, 4.0, 8.0),
+	        std::make_shared<SuperellipseShape>(0.8, 1.0, 12.0, 12.0), std::make_shared<SuperellipseShape>(1.0, 0.7, 3.0, 5.0),
+	        std::make_shared<SuperellipseShape>(1.0, 0.6, 2.5, 2.5), std::make_shared<SuperellipseShape>(1.2, 0.5, 3.7, 3.7),
+	        std::make_shared<SuperellipseShape>(0.9, 0.6, 5.3, 2.8), std::make_shared<SuperellipseShape>(1.0, 1.0, 2.2, 4.6)};
+}
+
 // The far crossing of f = 1 by the line x + u·d in long double: the lowest point of the convex f
 // along the line (golden sections over ±4 sizes), then bisection of f − 1 towards 4 sizes beyond.
 // Requires the lowest point inside (f < 1).
@@ -151,14 +163,7 @@ TEST_CASE("superellipse terms: SmoothFarCrossing's Halley steps land on the far 
 	// f(x + t·d) − 1 in long double between the point of the line where f is lowest (inside) and
 	// far beyond. Every crossing it reports must be right to 1e-13 of the size; it may decline
 	// (false) only where the caller's search then decides, and does so rarely.
-	const std::vector<std::shared_ptr<SuperellipseShape>> shapes = {
-		std::make_shared<SuperellipseShape>(1.0, 0.6, 4.0, 4.0), std::make_shared<SuperellipseShape>(2.0, 0.5, 8.0, 8.0),
-		std::make_shared<SuperellipseShape>(1.0, 0.5, 4.0, 8.0), std::make_shared<SuperellipseShape>(0.8, 1.0, 12.0, 12.0),
-		std::make_shared<SuperellipseShape>(1.3, 0.4, 2.0, 2.0), std::make_shared<SuperellipseShape>(1.0, 0.7, 3.0, 5.0),
-		// Real exponents (one std::pow per axis and step), one of them in (2, 3), where g''' is
-		// unbounded at an axis.
-		std::make_shared<SuperellipseShape>(1.0, 0.6, 2.5, 2.5), std::make_shared<SuperellipseShape>(1.2, 0.5, 3.7, 3.7),
-		std::make_shared<SuperellipseShape>(0.9, 0.6, 5.3, 2.8), std::make_shared<SuperellipseShape>(1.0, 1.0, 2.2, 4.6)};
+	const std::vector<std::shared_ptr<SuperellipseShape>> shapes = CrossingShapes(1.3, 0.4, 2.0, 2.0);
 	Random rng(91);
 	int found = 0, declined = 0;
 	double worst = 0.0;
@@ -203,12 +208,7 @@ TEST_CASE("superellipse terms: SmoothFarCrossingFrom agrees with SuperellipseFar
 	// Halley crossing from one evaluation and the Newton one on f^(1/p) it replaced must answer
 	// alike: found or not for the same lines, and where found within 1e-14 of the size of each
 	// other and of the long-double reference.
-	const std::vector<std::shared_ptr<SuperellipseShape>> shapes = {
-		std::make_shared<SuperellipseShape>(1.0, 0.6, 4.0, 4.0), std::make_shared<SuperellipseShape>(0.01, 0.01, 4.0, 4.0),
-		std::make_shared<SuperellipseShape>(2.0, 0.5, 8.0, 8.0), std::make_shared<SuperellipseShape>(1.0, 0.5, 4.0, 8.0),
-		std::make_shared<SuperellipseShape>(0.8, 1.0, 12.0, 12.0), std::make_shared<SuperellipseShape>(1.0, 0.7, 3.0, 5.0),
-		std::make_shared<SuperellipseShape>(1.0, 0.6, 2.5, 2.5), std::make_shared<SuperellipseShape>(1.2, 0.5, 3.7, 3.7),
-		std::make_shared<SuperellipseShape>(0.9, 0.6, 5.3, 2.8), std::make_shared<SuperellipseShape>(1.0, 1.0, 2.2, 4.6)};
+	const std::vector<std::shared_ptr<SuperellipseShape>> shapes = CrossingShapes(0.01, 0.01, 4.0, 4.0);
 	Random rng(44);
 	int found = 0, both = 0;
 	double worstOld = 0.0, worstReference = 0.0;
