@@ -91,6 +91,44 @@ TEST_CASE("superellipse terms: IntegerSuperellipseDerivatives is RawSuperellipse
 	CHECK_FALSE(IntegerExponents(SuperellipseShape(1.0, 1.0, 4.0, 1.0).Terms()));
 }
 
+TEST_CASE("superellipse terms: IntegerSuperellipseDerivativesEqual is RawSuperellipseDerivatives, bit for bit, for n = m")
+{
+	// Both axes in the lanes of SSE2 registers (PowAbsPair): each lane's operations are the
+	// scalar code's, so every value is equal, for every exponent PowAbs multiplies out (2 to 10)
+	// and those it loops for (12, 20, 33), on the axes, of both signs and far out; NaN stays NaN.
+	Random rng(6);
+	int compared = 0;
+	for (int n : {2, 3, 4, 5, 6, 7, 8, 9, 10, 12, 20, 33})
+	{
+		const SuperellipseShape s(rng.LogUniform(0.1, 10.0), rng.LogUniform(0.1, 10.0), n, n);
+		const SuperellipseTerms& t = s.Terms();
+		REQUIRE(t.nInt == t.mInt);
+		for (int k = 0; k < 400; ++k)
+		{
+			Vec2 x(rng.Uniform(-2.0, 2.0) * s.A(), rng.Uniform(-2.0, 2.0) * s.B());
+			if (k % 10 == 0) x.x = 0.0;
+			if (k % 10 == 1) x.y = -0.0;
+			if (k % 10 == 2) x = -x;
+			if (k % 10 == 3) x = 1e3 * x;
+			const LevelDerivatives raw = RawSuperellipseDerivatives(t, x);
+			const AxisDerivatives paired = IntegerSuperellipseDerivativesEqual(t, x.x, x.y);
+			CAPTURE(n);
+			CAPTURE(x.x);
+			CAPTURE(x.y);
+			CHECK(paired.f == raw.value);
+			CHECK(paired.gx == raw.gradient.x);
+			CHECK(paired.gy == raw.gradient.y);
+			CHECK(paired.hx == raw.hessian.xx);
+			CHECK(paired.hy == raw.hessian.yy);
+			++compared;
+		}
+	}
+	CHECK(compared == 4800);
+	const AxisDerivatives nan = IntegerSuperellipseDerivativesEqual(SuperellipseShape(1.0, 0.5, 4.0, 4.0).Terms(), std::nan(""), 0.2);
+	CHECK(std::isnan(nan.f));
+	CHECK(std::isnan(nan.gx));
+}
+
 TEST_CASE("superellipse terms: SmoothSuperellipseDerivatives is RawSuperellipseDerivatives for exponents >= 2, and the closed forms")
 {
 	// For every exponent ≥ 2, integer or real, the same values as RawSuperellipseDerivatives, bit
