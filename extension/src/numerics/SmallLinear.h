@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 namespace b2a
 {
@@ -90,15 +91,15 @@ inline void ApplyAdjugate(const BorderedAdjugate& a, const double r[3], double x
 		x[i] = (a.c[i][0] * r[0] + a.c[i][1] * r[1] + a.c[i][2] * r[2]) * inv;
 }
 
-/// Solve3 for the bordered symmetric matrix of BorderedAdjugate: the same adjugate, solution and
-/// exact rcond, with the zero and the symmetry written out (about half the operations).
-inline Solve3Result SolveBordered(double h11, double h12, double h22, double g1, double g2, double d1, double d2,
-                                  const double r[3])
+/// SolveBordered's exact reciprocal condition number of the bordered matrix (its entries as
+/// SolveBordered takes them) whose adjugate is `a`; NaN where SolveBordered fails (det J zero or
+/// not finite, the condition number or 1/det not finite).
+inline double BorderedRcond(const BorderedAdjugate& a, double h11, double h12, double h22, double g1, double g2, double d1,
+                            double d2)
 {
-	Solve3Result out;
-	const BorderedAdjugate a = AdjugateOfBordered(h11, h12, h22, g1, g2, d1, d2);
+	const double nan = std::numeric_limits<double>::quiet_NaN();
 	if (!(std::fabs(a.det) > 0.0) || !std::isfinite(a.det))
-		return out;
+		return nan;
 	const double j0 = std::fabs(h11) + std::fabs(h12) + std::fabs(d1), j1 = std::fabs(h12) + std::fabs(h22) + std::fabs(d2),
 	             j2 = std::fabs(g1) + std::fabs(g2);
 	double k[3];
@@ -108,6 +109,19 @@ inline Solve3Result SolveBordered(double h11, double h12, double h22, double g1,
 	const double normC = k[0] > k[1] ? (k[0] > k[2] ? k[0] : k[2]) : (k[1] > k[2] ? k[1] : k[2]);
 	const double rcond = std::fabs(a.det) / (normJ * normC); // 1 / (‖J‖ · ‖adj J‖ / |det|)
 	if (!std::isfinite(rcond) || !std::isfinite(1.0 / a.det))
+		return nan;
+	return rcond;
+}
+
+/// Solve3 for the bordered symmetric matrix of BorderedAdjugate: the same adjugate, solution and
+/// exact rcond, with the zero and the symmetry written out (about half the operations).
+inline Solve3Result SolveBordered(double h11, double h12, double h22, double g1, double g2, double d1, double d2,
+                                  const double r[3])
+{
+	Solve3Result out;
+	const BorderedAdjugate a = AdjugateOfBordered(h11, h12, h22, g1, g2, d1, d2);
+	const double rcond = BorderedRcond(a, h11, h12, h22, g1, g2, d1, d2);
+	if (std::isnan(rcond))
 		return out;
 	out.rcond = rcond;
 	ApplyAdjugate(a, r, out.x);
