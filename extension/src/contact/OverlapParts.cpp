@@ -18,26 +18,26 @@ namespace
 {
 // Scratch of one call, kept per thread and grown, never shrunk: neither allocated nor
 // initialised a call (two heap allocations a call cost a tenth as much as the levels they held).
+// Everything is held per place (a reachable sample, in increasing order of the samples): a
+// sample that is not reachable is outside outer, and its level counts as +∞.
 struct Scratch
 {
 	std::vector<Vec2> x;          // places to evaluate (outer's body frame)
-	std::vector<double> level;    // per sample; +∞ between calls (each call resets what it set)
-	std::vector<double> gathered; // per place
-	std::vector<int> index;       // the sample of each place; then the minima, in order
-	std::vector<int> wrapped;     // minima at or before `start`
-	std::vector<int> minima;      // the minima, in order
-	std::vector<int> slot;        // the sample of each place evaluated here
+	std::vector<double> level;    // per place
+	std::vector<double> gathered; // per place evaluated here
+	std::vector<int> index;       // the sample of each place
+	std::vector<int> minima;      // the minima's samples, in order
+	std::vector<int> slot;        // the place of each place evaluated here
 	static Scratch& ForThread(int n)
 	{
 		thread_local Scratch s;
 		if (int(s.level.size()) < n)
 		{
-			s.level.resize(size_t(n), std::numeric_limits<double>::infinity());
+			s.level.resize(size_t(n));
 			s.gathered.resize(size_t(n));
 			s.minima.resize(size_t(n));
 			s.x.resize(size_t(n));
 			s.index.resize(size_t(n));
-			s.wrapped.resize(size_t(n));
 			s.slot.resize(size_t(n));
 		}
 		return s;
@@ -201,80 +201,78 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	const int n = samples.Count();
 	const Pose rel = Relative(po, pi); // inner's body to outer's body
 	Scratch& scratch = Scratch::ForThread(n);
-	double* level = scratch.level.data();
 	// The levels this thread's last grid solve evaluated, where it rescaled outer onto inner's
 	// surface in this relative pose (the contact's solve, just before): the same Level at the
 	// same point, bit for bit (LastGridLevels), taken rather than evaluated again.
 	GridLevels known;
 	const bool reuse = fast && LastGridLevels(outer, inner, rel, samples, &known);
+	const int* index = scratch.index.data();
 	const int m = ReachableSamples(outer, rel, runs, fast, reuse ? &known : nullptr, scratch.index.data());
-	int evaluated = 0;
-	for (int j = 0; j < m; ++j)
+	double* level = scratch.level.data(); // per place
+	if (reuse)
 	{
-		const int k = scratch.index[j];
-		if (reuse && known.stamp[k] == known.generation)
-			level[k] = known.value[k];
-		else
+		int evaluated = 0;
+		for (int j = 0; j < m; ++j)
 		{
-			scratch.x[evaluated] = ToWorld(rel, samples.point[size_t(k)]);
-			scratch.slot[evaluated++] = k;
+			const int k = index[j];
+			if (known.stamp[k] == known.generation)
+				level[j] = known.value[k];
+			else
+			{
+				scratch.x[evaluated] = ToWorld(rel, samples.point[size_t(k)]);
+				scratch.slot[evaluated++] = j;
+			}
+		}
+		outer.Levels(scratch.x.data(), evaluated, scratch.gathered.data());
+		for (int e = 0; e < evaluated; ++e)
+			level[scratch.slot[e]] = scratch.gathered[e];
+	}
+	else
+	{
+		for (int j = 0; j < m; ++j)
+			scratch.x[j] = ToWorld(rel, samples.point[size_t(index[j])]);
+		outer.Levels(scratch.x.data(), m, level);
+	}
+	const double surface = outer.SurfaceLevel();
+	auto inside = [&](int j) { return level[j] < surface; };
+	// The first sample not inside: the first one not reachable, or a reachable one outside.
+	int start = -1, first = 0; // first: the places at or before `start`
+	{
+		int j = 0;
+		while (j < m && index[j] == j && inside(j))
+			++j;
+		if (j < n)
+		{
+			start = j;
+			first = j < m && index[j] == j ? j + 1 : j;
 		}
 	}
-	outer.Levels(scratch.x.data(), evaluated, scratch.gathered.data());
-	for (int j = 0; j < evaluated; ++j)
-		level[scratch.slot[j]] = scratch.gathered[j];
-	// (Only an evaluated sample can be inside, and the places were gathered in increasing order
-	// of their samples: the loops below run over them alone.)
-	const double surface = outer.SurfaceLevel();
-	auto inside = [&](int i) { return level[i] < surface; };
-	int start = -1;
-	for (int i = 0; i < n && start < 0; ++i)
-		if (!inside(i))
-			start = i;
-	// The levels set are reset to +∞ once the minima are found, or on any way out (a shape
-	// function that throws included).
-	struct Reset
-	{
-		double* level;
-		const int* index;
-		int count;
-		void operator()()
-		{
-			for (int j = 0; j < count; ++j)
-				level[index[j]] = std::numeric_limits<double>::infinity();
-			count = 0;
-		}
-		~Reset() { (*this)(); }
-	} reset{level, scratch.index.data(), m};
 	if (start < 0)
 		return 0;
 	// Every local minimum of the level along a run is a part: a long run (a lobe lying along the
 	// other's side) has one at either end, and the contact, warm-started, at either; with the
 	// run's deepest sample alone, the part at the contact's end was its own, and the manifold
 	// had two points one step and one the next. They are taken in order from the sample after
-	// `start`, cyclically (the order decides which of more than `max` stay).
+	// `start`, cyclically (the order decides which of more than `max` stay). A neighbour that is
+	// not a place is outside (+∞); sample 0 and sample n − 1 are neighbours.
 	int* minima = scratch.minima.data();
 	int candidates = 0;
 	{
-		int first = 0;
-		while (first < m && scratch.index[first] <= start)
-			++first;
-		auto isMinimum = [&](int k) {
-			const double here = level[k];
-			return inside(k) && here <= level[k == 0 ? n - 1 : k - 1] && here < level[k + 1 == n ? 0 : k + 1];
+		const double infinity = std::numeric_limits<double>::infinity();
+		const bool wraps = m > 0 && index[0] == 0 && index[m - 1] == n - 1;
+		auto isMinimum = [&](int j) {
+			const double here = level[j];
+			const double before = j > 0 ? (index[j - 1] == index[j] - 1 ? level[j - 1] : infinity) : (wraps ? level[m - 1] : infinity);
+			const double after = j + 1 < m ? (index[j + 1] == index[j] + 1 ? level[j + 1] : infinity) : (wraps ? level[0] : infinity);
+			return here < surface && here <= before && here < after;
 		};
-		int* wrapped = scratch.wrapped.data();
-		int wrappedCount = 0;
-		for (int j = 0; j < first; ++j)
-			if (isMinimum(scratch.index[j]))
-				wrapped[wrappedCount++] = scratch.index[j];
 		for (int j = first; j < m; ++j)
-			if (isMinimum(scratch.index[j]))
-				minima[candidates++] = scratch.index[j];
-		for (int j = 0; j < wrappedCount; ++j)
-			minima[candidates++] = wrapped[j];
+			if (isMinimum(j))
+				minima[candidates++] = index[j];
+		for (int j = 0; j < first; ++j)
+			if (isMinimum(j))
+				minima[candidates++] = index[j];
 	}
-	reset(); // (the levels are not needed below)
 	const bool mayskip = fast && skip && candidates <= max;
 	const Vec2 skipPoint = mayskip ? ToBody(pi, skip->point) : Vec2();
 	int found = 0;
