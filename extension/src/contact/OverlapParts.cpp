@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -44,6 +45,19 @@ struct Scratch
 	}
 };
 
+// The index of the lowest bit set in `bits` (not zero).
+inline int LowestBit(std::uint64_t bits)
+{
+#if defined(__GNUC__) || defined(__clang__)
+	return __builtin_ctzll(bits);
+#else
+	int r = 0;
+	for (; !(bits & 1); bits >>= 1)
+		++r;
+	return r;
+#endif
+}
+
 // The samples of every run over which outer's level bounds lie below its surface level, in
 // increasing order, into index (returns their count): only they can be inside outer. Groups of
 // runs first, then each run's disc, then its thin box, as the grid method bounds them. Every
@@ -70,7 +84,7 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 	} discs;
 	Vec2* centres = discs.centre;
 	double radii[kMaxDiscs], lower[kMaxDiscs], fresh[kMaxDiscs];
-	int runOf[kMaxDiscs], slot[kMaxDiscs];
+	int slot[kMaxDiscs];
 	// The bounds the grid solve took in this relative pose (known: the same LevelLowerBounds over
 	// the same discs, bit for bit) are taken again; the others are evaluated together.
 	if (known && known->groupBound)
@@ -84,42 +98,44 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 		}
 		bounds->LevelLowerBounds(centres, radii, groups, lower);
 	}
-	int candidates = 0;
+	// The runs still open, one bit a run (at most kMaxDiscs): a verdict a bit, not a branch on
+	// each bound (which runs a bound rules out follows no pattern a predictor learns). A bound
+	// that is NaN rules nothing out.
+	using Bits = std::uint64_t;
+	Bits open = 0; // the runs of groups not ruled out
 	for (int g = 0; g < groups; ++g)
 	{
-		if (lower[g] >= surface)
-			continue;
-		const int last = std::min((g + 1) * SampleRuns::kGroupRuns, runCount);
-		for (int r = g * SampleRuns::kGroupRuns; r < last; ++r)
-			runOf[candidates++] = r;
+		const int firstRun = g * SampleRuns::kGroupRuns, count = std::min(SampleRuns::kGroupRuns, runCount - firstRun);
+		const Bits mask = ((Bits(1) << count) - 1) << firstRun;
+		open |= lower[g] >= surface ? Bits(0) : mask;
 	}
 	// A run's bound from the grid is at least its group's, which lies below the surface level
 	// here: below it exactly where the run's own bound is.
+	Bits discOpen = 0; // the runs whose own disc does not rule them out either
 	int toBound = 0;
-	for (int j = 0; j < candidates; ++j)
+	for (Bits rest = open; rest != 0; rest &= rest - 1)
 	{
-		const int r = runOf[j];
+		const int r = LowestBit(rest);
 		if (known && known->runStamp[r] == known->generation)
 		{
-			lower[j] = known->runBound[r];
+			discOpen |= known->runBound[r] >= surface ? Bits(0) : Bits(1) << r;
 			continue;
 		}
 		centres[toBound] = ToWorld(rel, runs.runCentre[size_t(r)]);
 		radii[toBound] = runs.runRadius[size_t(r)];
-		slot[toBound++] = j;
+		slot[toBound++] = r;
 	}
 	if (toBound > 0)
 		bounds->LevelLowerBounds(centres, radii, toBound, fresh);
 	for (int i = 0; i < toBound; ++i)
-		lower[slot[i]] = fresh[i];
+		discOpen |= fresh[i] >= surface ? Bits(0) : Bits(1) << slot[i];
 	int m = 0;
 	bool wrapsToZero = false; // the last run's last sample is sample 0
-	for (int j = 0; j < candidates; ++j)
+	for (Bits rest = discOpen; rest != 0; rest &= rest - 1)
 	{
-		if (lower[j] >= surface)
-			continue;
+		const int r = LowestBit(rest);
 		// Runs come in increasing order and share their end samples: each sample once.
-		const int first = runOf[j] * SampleRuns::kRunLength;
+		const int first = r * SampleRuns::kRunLength;
 		const int last = std::min(first + SampleRuns::kRunLength, n);
 		// The run's thin box, where its disc did not rule it out (as the grid method's last
 		// look before it evaluates a run), unless the grid solve evaluated the run whole (every
@@ -127,7 +143,6 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 		// samples being evaluated by its own scan alone): a run the box rules out is outside, and
 		// its levels, evaluated or +∞, order its samples the same against any sample inside.
 		// (The grid solve's box bound where it took one: the same bound over the same box.)
-		const int r = runOf[j];
 		if (!(known && known->scanned[r]))
 		{
 			double boxLower;
@@ -255,23 +270,36 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 	// had two points one step and one the next. They are taken in order from the sample after
 	// `start`, cyclically (the order decides which of more than `max` stay). A neighbour that is
 	// not a place is outside (+∞); sample 0 and sample n − 1 are neighbours.
+	// The places inside first, without a branch on each (whether a place lies inside follows no
+	// pattern a predictor learns), then the minima among them: the places outside, most of
+	// those reached, are no minima.
+	int* insidePlaces = scratch.slot.data();
+	int insideCount = 0;
+	for (int j = 0; j < m; ++j)
+	{
+		insidePlaces[insideCount] = j;
+		insideCount += inside(j) ? 1 : 0;
+	}
 	int* minima = scratch.minima.data();
 	int candidates = 0;
 	{
 		const double infinity = std::numeric_limits<double>::infinity();
 		const bool wraps = m > 0 && index[0] == 0 && index[m - 1] == n - 1;
-		auto isMinimum = [&](int j) {
+		auto take = [&](int i) {
+			const int j = insidePlaces[i];
 			const double here = level[j];
 			const double before = j > 0 ? (index[j - 1] == index[j] - 1 ? level[j - 1] : infinity) : (wraps ? level[m - 1] : infinity);
 			const double after = j + 1 < m ? (index[j + 1] == index[j] + 1 ? level[j + 1] : infinity) : (wraps ? level[0] : infinity);
-			return here < surface && here <= before && here < after;
+			minima[candidates] = index[j];
+			candidates += (here <= before) & (here < after) ? 1 : 0;
 		};
-		for (int j = first; j < m; ++j)
-			if (isMinimum(j))
-				minima[candidates++] = index[j];
-		for (int j = 0; j < first; ++j)
-			if (isMinimum(j))
-				minima[candidates++] = index[j];
+		int split = 0; // the inside places at or before `start` come last
+		while (split < insideCount && insidePlaces[split] < first)
+			++split;
+		for (int i = split; i < insideCount; ++i)
+			take(i);
+		for (int i = 0; i < split; ++i)
+			take(i);
 	}
 	const bool mayskip = fast && skip && candidates <= max;
 	const Vec2 skipPoint = mayskip ? ToBody(pi, skip->point) : Vec2();
