@@ -38,7 +38,7 @@ struct Scratch
 			s.gathered.resize(size_t(n));
 			s.minima.resize(size_t(n));
 			s.x.resize(size_t(n));
-			s.index.resize(size_t(n));
+			s.index.resize(size_t(n + SampleRuns::kRunLength + 1));
 			s.slot.resize(size_t(n));
 		}
 		return s;
@@ -56,6 +56,13 @@ inline int LowestBit(std::uint64_t bits)
 		++r;
 	return r;
 #endif
+}
+
+// All ones where a lower bound leaves the surface level open (NaN included), else zero: a mask
+// computed, not a branch taken.
+inline std::uint64_t Open(double lower, double surface)
+{
+	return std::uint64_t(0) - std::uint64_t(!(lower >= surface));
 }
 
 // The samples of every run over which outer's level bounds lie below its surface level, in
@@ -107,7 +114,7 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 	{
 		const int firstRun = g * SampleRuns::kGroupRuns, count = std::min(SampleRuns::kGroupRuns, runCount - firstRun);
 		const Bits mask = ((Bits(1) << count) - 1) << firstRun;
-		open |= lower[g] >= surface ? Bits(0) : mask;
+		open |= mask & Open(lower[g], surface);
 	}
 	// A run's bound from the grid is at least its group's, which lies below the surface level
 	// here: below it exactly where the run's own bound is.
@@ -118,7 +125,7 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 		const int r = LowestBit(rest);
 		if (known && known->runStamp[r] == known->generation)
 		{
-			discOpen |= known->runBound[r] >= surface ? Bits(0) : Bits(1) << r;
+			discOpen |= (Bits(1) << r) & Open(known->runBound[r], surface);
 			continue;
 		}
 		centres[toBound] = ToWorld(rel, runs.runCentre[size_t(r)]);
@@ -128,7 +135,7 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 	if (toBound > 0)
 		bounds->LevelLowerBounds(centres, radii, toBound, fresh);
 	for (int i = 0; i < toBound; ++i)
-		discOpen |= fresh[i] >= surface ? Bits(0) : Bits(1) << slot[i];
+		discOpen |= (Bits(1) << slot[i]) & Open(fresh[i], surface);
 	int m = 0;
 	bool wrapsToZero = false; // the last run's last sample is sample 0
 	for (Bits rest = discOpen; rest != 0; rest &= rest - 1)
@@ -158,9 +165,13 @@ int ReachableSamples(const Shape& outer, const Pose& rel, const SampleRuns& runs
 			if (boxLower >= surface)
 				continue;
 		}
+		// (All the run's samples written, from the last one written where the runs meet: a loop
+		// of a fixed count. The index holds n + kRunLength places for the writes past `stop`.)
 		const int stop = std::min(last, n - 1);
-		for (int k = m > 0 && index[m - 1] >= first ? index[m - 1] + 1 : first; k <= stop; ++k)
-			index[m++] = k;
+		m -= m > 0 && index[m - 1] == first ? 1 : 0;
+		for (int k = 0; k <= SampleRuns::kRunLength; ++k)
+			index[m + k] = first + k;
+		m += stop - first + 1;
 		wrapsToZero = wrapsToZero || last == n;
 	}
 	if (wrapsToZero && !(m > 0 && index[0] == 0))
