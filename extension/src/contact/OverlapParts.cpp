@@ -28,7 +28,7 @@ struct Scratch
 	std::vector<double> gathered; // per place evaluated here
 	std::vector<int> index;       // the sample of each place
 	std::vector<int> minima;      // the minima's samples, in order
-	std::vector<int> slot;        // the place of each place evaluated here
+	std::vector<int> slot;        // the place of each place evaluated here; then the places inside
 	static Scratch& ForThread(int n)
 	{
 		thread_local Scratch s;
