@@ -124,6 +124,7 @@ SuperellipseShape::SuperellipseShape(double a, double b, double n, double m, dou
 	RequireExponent(what, "n", n, 1.0);
 	RequireExponent(what, "m", m, 1.0);
 	SetDerivativesCheap(); // (the terms' powers serve the level and its derivatives alike)
+	SetSupportBoundsCheap(); // (nested bodies, no powers)
 
 	// An exponent of 1 puts a corner where its term vanishes: |x/a| at x = 0 (polar ±π/2),
 	// |y/b| at y = 0 (polar 0 and π, reported as −π).
