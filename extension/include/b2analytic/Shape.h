@@ -214,6 +214,12 @@ public:
 		return false;
 	}
 
+	/// FarCrossing for a point x near the own surface (within a small fraction of the particle's
+	/// size: a contact manifold's face point), the same crossing to rounding: a shape overrides it
+	/// where a search started at such a point is cheaper than FarCrossing's from anywhere (the
+	/// superellipse's Halley steps on its own level). The default is FarCrossing.
+	virtual bool FarCrossingNear(Vec2 x, Vec2 d, double& t) const { return FarCrossing(x, d, t); }
+
 	/// True only where the shape proves, in closed form, that the body line x + t·d misses the
 	/// particle (clear of rounding: a grazing line is not a miss). False where it meets it or the
 	/// shape cannot tell. The contact code then takes the radial point without searching the line.

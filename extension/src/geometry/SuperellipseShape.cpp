@@ -239,6 +239,13 @@ bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
 	return QuadraticFarRoot(D * D + E * E, X * D + Y * E, (X * X + Y * Y) - 1.0, t) == LineQuadratic::crosses;
 }
 
+bool SuperellipseShape::FarCrossingNear(Vec2 x, Vec2 d, double& t) const
+{
+	if (Kind() != BuiltinKinds::superellipse)
+		return FarCrossing(x, d, t);
+	return SmoothFarCrossingFrom(m_terms, x, d, std::min(m_a, m_b), t);
+}
+
 bool SuperellipseShape::LevelSmoothOver(Vec2 centre, double radius) const
 {
 	auto even = [](int k) { return k >= 2 && k % 2 == 0; };
