@@ -207,8 +207,8 @@ TEST_CASE("polygon contact: a heart against boxes and segments matches the brute
 namespace
 {
 // A superellipse under another class: every query forwarded, but SupportBounds left exact (the
-// default), so SeparatingAxisContact takes every candidate's support, as it did before its
-// superellipses skipped those their bounds rule out.
+// default) and SupportBoundsCheap not declared, so SeparatingAxisContact takes every candidate's
+// support, as it did before its superellipses skipped those their bounds rule out.
 class PlainForwarding final : public Shape
 {
 public:
@@ -228,56 +228,149 @@ public:
 private:
 	ShapePtr m_inner;
 };
+
+// A user's shape of a kind of its own, registered at run time: the ellipse (x/a)² + (y/b)² ≤ 1
+// with its closed-form support h(d) = |(a·dx, b·dy)| and cheap bounds of it, max(|a·dx|, |b·dy|)
+// ≤ h ≤ |a·dx| + |b·dy| (no square root), which it declares cheap (SupportBoundsCheap) only when
+// `cheap` is set.
+class BoundedEllipse final : public Shape
+{
+public:
+	BoundedEllipse(double a, double b, bool cheap) : Shape(RegisteredKind(), 1.0, true, true, 1.0), m_a(a), m_b(b)
+	{
+		if (cheap)
+			SetSupportBoundsCheap();
+		Finalize(std::max(a, b), nullptr);
+	}
+	std::string Describe() const override { return "bounded ellipse(a=" + FormatNumber(m_a) + ", b=" + FormatNumber(m_b) + ")"; }
+	double Level(Vec2 x) const override { return (x.x / m_a) * (x.x / m_a) + (x.y / m_b) * (x.y / m_b); }
+	LevelDerivatives Derivatives(Vec2 x) const override
+	{
+		LevelDerivatives d;
+		d.value = Level(x);
+		d.gradient = Vec2(2.0 * x.x / (m_a * m_a), 2.0 * x.y / (m_b * m_b));
+		d.hessian.xx = 2.0 / (m_a * m_a);
+		d.hessian.yy = 2.0 / (m_b * m_b);
+		return d;
+	}
+	Vec2 Support(Vec2 d) const override
+	{
+		const Vec2 e(m_a * d.x, m_b * d.y);
+		return Vec2(m_a * e.x, m_b * e.y) / Length(e);
+	}
+	void SupportBounds(Vec2 d, double& lower, double& upper) const override
+	{
+		const double ex = std::fabs(m_a * d.x), ey = std::fabs(m_b * d.y);
+		lower = std::max(ex, ey) * (1.0 - 1e-12);
+		upper = (ex + ey) * (1.0 + 1e-12);
+	}
+	static ShapeKind RegisteredKind()
+	{
+		const ShapeKind found = FindShapeKind("test_bounded_ellipse");
+		return found.Valid() ? found : RegisterShapeKind("test_bounded_ellipse", 2, SolverClass::smoothConvex);
+	}
+
+private:
+	double m_a, m_b;
+};
+
+// SeparatingAxisContact of `shape` and of `twin` (the same particle, taking every candidate's
+// support) against a box and a segment, alternately, in 200 random poses: resting flat (a third),
+// tilted or at any angle; from 0.1 into the face to 0.4 above it, anywhere along it and past its
+// ends. Normal, separation and points must agree bit for bit, with no more gap evaluations;
+// `fewer` adds up the evaluations saved. Where `ellipse` gives the particle's semi-axes, the
+// separation must also match the largest gap by scanning directions (GapByScan).
+void CompareSkipped(const Shape& shape, const Shape& twin, Random& rng, long& fewer, long& calls, const Vec2* ellipse = nullptr)
+{
+	const Vec2 box[] = {{-1.0, -0.5}, {1.0, -0.5}, {1.0, 0.5}, {-1.0, 0.5}};
+	const Vec2 segment[] = {{-2.0, 0.0}, {2.0, 0.0}};
+	for (int i = 0; i < 200; ++i)
+	{
+		const bool isBox = i % 2 == 0;
+		const Vec2* v = isBox ? box : segment;
+		const int count = isBox ? 4 : 2;
+		const Pose pb(Vec2(rng.Uniform(-3.0, 3.0), rng.Uniform(-3.0, 3.0)), rng.Uniform(-0.3, 0.3));
+		const double tilt = i % 3 == 0 ? rng.Uniform(-0.01, 0.01) : rng.Angle();
+		const Rot q(tilt + pb.q.Angle());
+		const Vec2 up = Rotate(pb.q, Vec2(0.0, 1.0));
+		const double rise = shape.SupportValue(InvRotate(q, -1.0 * up));
+		const Pose pa(ToWorld(pb, Vec2(rng.Uniform(-2.6, 2.6), (isBox ? 0.5 : 0.0) + rng.Uniform(-0.1, 0.4))) + rise * up, q);
+		const Vec2 guess = Rotate(pb.q, Vec2(rng.Uniform(-0.2, 0.2), -1.0));
+		CAPTURE(shape.Describe());
+		CAPTURE(i);
+		const ContactResult r = SeparatingAxisContact(shape, pa, v, count, pb, i % 4 == 1 ? &guess : nullptr);
+		const ContactResult t = SeparatingAxisContact(twin, pa, v, count, pb, i % 4 == 1 ? &guess : nullptr);
+		REQUIRE(r.Ok());
+		REQUIRE(t.Ok());
+		CHECK(r.separation == t.separation);
+		CHECK(r.normal.x == t.normal.x);
+		CHECK(r.normal.y == t.normal.y);
+		CHECK(r.pointA.x == t.pointA.x);
+		CHECK(r.pointA.y == t.pointA.y);
+		CHECK(r.pointB.x == t.pointB.x);
+		CHECK(r.pointB.y == t.pointB.y);
+		CHECK(r.iterations <= t.iterations);
+		if (ellipse)
+		{
+			auto support = [&](Vec2 n) {
+				const Vec2 nb = InvRotate(pa.q, n);
+				return Dot(pa.p, n) + std::hypot(ellipse->x * nb.x, ellipse->y * nb.y);
+			};
+			std::vector<Vec2> w;
+			for (int j = 0; j < count; ++j)
+				w.push_back(ToWorld(pb, v[j]));
+			double angle = 0.0;
+			const double reference = GapByScan(support, w, 4096, angle);
+			// The reference never exceeds the true maximum; golden search leaves it ~1e-15 below.
+			CHECK(r.separation >= reference - 1e-12);
+			CHECK(r.separation <= reference + 1e-9);
+		}
+		fewer += t.iterations - r.iterations;
+		++calls;
+	}
+}
 } // namespace
 
 TEST_CASE("polygon contact: a superellipse's skipped candidates change no bit of the answer")
 {
 	// SeparatingAxisContact skips a candidate axis whose gap with the superellipse's closed-form
 	// lower bound on the support value cannot beat the best found. Reference: the same shape
-	// behind PlainForwarding, whose candidates all take their supports: normal, separation and
-	// points must agree bit for bit, with fewer gap evaluations.
+	// behind PlainForwarding, whose candidates all take their supports.
 	const std::vector<ShapePtr> shapes = {MakeSuperellipse(0.5, 0.3, 4.0, 4.0), MakeSuperellipse(0.7, 0.2, 2.5, 2.5),
 	                                      MakeSuperellipse(0.4, 0.4, 8.0, 8.0), MakeSuperellipse(0.6, 0.3, 4.0, 8.0),
 	                                      MakeSuperellipse(0.5, 0.3, 1.5, 1.5), MakeEllipse(0.5, 0.25)};
-	const Vec2 box[] = {{-1.0, -0.5}, {1.0, -0.5}, {1.0, 0.5}, {-1.0, 0.5}};
-	const Vec2 segment[] = {{-2.0, 0.0}, {2.0, 0.0}};
 	Random rng(64);
 	long fewer = 0, calls = 0;
 	for (const ShapePtr& shape : shapes)
 	{
+		CHECK(shape->SupportBoundsCheap());
 		const PlainForwarding twin(shape);
-		for (int i = 0; i < 200; ++i)
-		{
-			const bool isBox = i % 2 == 0;
-			const Vec2* v = isBox ? box : segment;
-			const int count = isBox ? 4 : 2;
-			const Pose pb(Vec2(rng.Uniform(-3.0, 3.0), rng.Uniform(-3.0, 3.0)), rng.Uniform(-0.3, 0.3));
-			// Resting flat (a third), tilted or at any angle; from 0.1 into the face to 0.4 above
-			// it, anywhere along it and past its ends.
-			const double tilt = i % 3 == 0 ? rng.Uniform(-0.01, 0.01) : rng.Angle();
-			const Rot q(tilt + pb.q.Angle());
-			const Vec2 up = Rotate(pb.q, Vec2(0.0, 1.0));
-			const double rise = shape->SupportValue(InvRotate(q, -1.0 * up));
-			const Pose pa(ToWorld(pb, Vec2(rng.Uniform(-2.6, 2.6), (isBox ? 0.5 : 0.0) + rng.Uniform(-0.1, 0.4))) + rise * up, q);
-			const Vec2 guess = Rotate(pb.q, Vec2(rng.Uniform(-0.2, 0.2), -1.0));
-			CAPTURE(shape->Describe());
-			CAPTURE(i);
-			const ContactResult r = SeparatingAxisContact(*shape, pa, v, count, pb, i % 4 == 1 ? &guess : nullptr);
-			const ContactResult t = SeparatingAxisContact(twin, pa, v, count, pb, i % 4 == 1 ? &guess : nullptr);
-			REQUIRE(r.Ok());
-			REQUIRE(t.Ok());
-			CHECK(r.separation == t.separation);
-			CHECK(r.normal.x == t.normal.x);
-			CHECK(r.normal.y == t.normal.y);
-			CHECK(r.pointA.x == t.pointA.x);
-			CHECK(r.pointA.y == t.pointA.y);
-			CHECK(r.pointB.x == t.pointB.x);
-			CHECK(r.pointB.y == t.pointB.y);
-			CHECK(r.iterations <= t.iterations);
-			fewer += t.iterations - r.iterations;
-			++calls;
-		}
+		CHECK_FALSE(twin.SupportBoundsCheap());
+		CompareSkipped(*shape, twin, rng, fewer, calls);
 	}
 	// The skip is exercised: most of the 16 even directions and the far side of each face go.
+	CHECK(fewer > 10 * calls);
+}
+
+TEST_CASE("polygon contact: a user shape kind that declares its support bounds cheap skips candidates, bit for bit")
+{
+	// The skip is the shape's to claim (SupportBoundsCheap), not the built-in classes': a shape
+	// of a kind registered at run time declares it and skips as a superellipse does. Reference:
+	// the same shape undeclared, and the ellipse's gap by scanning directions. A heart declares
+	// it too; a UserShape, whose SupportBounds is Support itself, does not.
+	CHECK(MakeHeart(1.0)->SupportBoundsCheap());
+	UserShapeDef def;
+	def.function = [](Vec2 x, double level) { return x.x * x.x + 4.0 * x.y * x.y - level; };
+	def.convex = def.smooth = true;
+	CHECK_FALSE(MakeUserShape(def)->SupportBoundsCheap());
+	Random rng(44);
+	long fewer = 0, calls = 0;
+	for (const Vec2 axes : {Vec2(0.5, 0.25), Vec2(0.3, 0.3), Vec2(0.8, 0.1)})
+	{
+		const BoundedEllipse cheap(axes.x, axes.y, true), plain(axes.x, axes.y, false);
+		REQUIRE(cheap.SupportBoundsCheap());
+		REQUIRE_FALSE(plain.SupportBoundsCheap());
+		CompareSkipped(cheap, plain, rng, fewer, calls, &axes);
+	}
 	CHECK(fewer > 10 * calls);
 }

@@ -263,6 +263,10 @@ TEST_CASE("superellipse terms: SmoothFarCrossingFrom agrees with SuperellipseFar
 			const bool gotNew = SmoothFarCrossingFrom(terms, x, d, unit, tNew);
 			const bool gotOld = SuperellipseFarCrossing(terms, x, d, tOld);
 			CHECK(gotNew == gotOld);
+			// The shape's FarCrossingNear, which the manifold calls, is this crossing for its kind.
+			double tShape = 0.0;
+			CHECK(s->FarCrossingNear(x, d, tShape) == gotNew);
+			CHECK((!gotNew || tShape == tNew));
 			if (!gotNew)
 				continue;
 			++found;
@@ -288,6 +292,17 @@ TEST_CASE("superellipse terms: SmoothFarCrossingFrom agrees with SuperellipseFar
 	CHECK_FALSE(SmoothFarCrossingFrom(s.Terms(), Vec2(0.2, 0.9), Vec2(1.0, 0.0), 0.6, t));
 	REQUIRE(SmoothFarCrossingFrom(s.Terms(), Vec2(1.5, 0.0), Vec2(-1.0, 0.0), 0.6, t));
 	CHECK(std::fabs(t - 2.5) <= 1e-15);
+	// Superellipses of other kinds (an ellipse, an exponent below 2, the ζ-form) answer
+	// FarCrossingNear with their FarCrossing, bit for bit.
+	for (const auto& other : {MakeEllipse(1.0, 0.6), MakeSuperellipse(1.0, 0.6, 1.5, 4.0), SuperellipseShape::FromZeta(1.0, 0.6, 2.0)})
+	{
+		CAPTURE(other->Describe());
+		CHECK(other->Kind() != BuiltinKinds::superellipse);
+		double near = 0.0, far = 0.0;
+		REQUIRE(other->FarCrossingNear(Vec2(0.9, 0.1), Vec2(0.6, 0.8), near));
+		REQUIRE(other->FarCrossing(Vec2(0.9, 0.1), Vec2(0.6, 0.8), far));
+		CHECK(near == far);
+	}
 }
 
 TEST_CASE("superellipse terms: SmoothFarCrossing declines a line that misses the particle or runs inwards")

@@ -214,6 +214,12 @@ public:
 		return false;
 	}
 
+	/// FarCrossing for a point x near the own surface (within a small fraction of the particle's
+	/// size: a contact manifold's face point), the same crossing to rounding: a shape overrides it
+	/// where a search started at such a point is cheaper than FarCrossing's from anywhere (the
+	/// superellipse's Halley steps on its own level). The default is FarCrossing.
+	virtual bool FarCrossingNear(Vec2 x, Vec2 d, double& t) const { return FarCrossing(x, d, t); }
+
 	/// True only where the shape proves, in closed form, that the body line x + t·d misses the
 	/// particle (clear of rounding: a grazing line is not a miss). False where it meets it or the
 	/// shape cannot tell. The contact code then takes the radial point without searching the line.
@@ -242,6 +248,13 @@ public:
 	{
 		lower = upper = SupportValue(d);
 	}
+	/// SupportBounds() costs well below Support() and its lower bound is close to h(d) (closed
+	/// forms, as for the superellipse and the heart): the separating-axis contact with a polygon
+	/// then bounds each candidate axis first and takes supports only for those that can win, with
+	/// the answer unchanged to the bit as long as the lower bound holds clear of rounding. False
+	/// by default (the default SupportBounds is Support itself, and bounding first would take
+	/// each support twice).
+	bool SupportBoundsCheap() const { return m_supportBoundsCheap; }
 	/// Tight world AABB of the particle at a pose: it touches the particle on all four sides.
 	/// (Box2D asks for it twice per moving body and step, so shapes with a cheaper form override it.)
 	virtual Box ComputeAABB(const Pose& pose) const;
@@ -317,6 +330,8 @@ protected:
 	void AddCorner(double theta);
 	/// Declare DerivativesCheap() (in the derived constructor).
 	void SetDerivativesCheap() { m_derivativesCheap = true; }
+	/// Declare SupportBoundsCheap() (in the derived constructor, with a SupportBounds override).
+	void SetSupportBoundsCheap() { m_supportBoundsCheap = true; }
 	/// A length scale used to bracket radial roots before the bounding radius is known.
 	virtual double LengthHint() const { return 1.0; }
 
@@ -327,6 +342,7 @@ private:
 	bool m_smoothConvex;
 	double m_levelPower;
 	bool m_derivativesCheap = false;
+	bool m_supportBoundsCheap = false;
 	double m_boundingRadius = 0.0;
 	double m_centreLevel = 0.0;
 	MassProperties m_mass;

@@ -70,6 +70,10 @@ public:
 	/// larger root of a quadratic, for other exponents Newton on a convex function of t, from
 	/// where it descends monotonically (false when the line misses or only grazes the particle).
 	bool FarCrossing(Vec2 x, Vec2 d, double& t) const override;
+	/// For exponents ≥ 2 on the raw level (the superellipse kind), Halley's steps on the level
+	/// itself from the point near the surface (SmoothFarCrossingFrom: one division a step where
+	/// FarCrossing's Newton on f^(1/p) takes a root and two); FarCrossing otherwise.
+	bool FarCrossingNear(Vec2 x, Vec2 d, double& t) const override;
 	/// LevelLowerBound and LevelSmoothOver of LevelBounds (the others claim nothing).
 	const LevelBounds* Bounds() const override { return this; }
 	/// Over the disc |x − c| ≤ ρ: |x| ≥ (|cx| − ρ)₊ and |y| ≥ (|cy| − ρ)₊, and the level grows

@@ -19,7 +19,6 @@
 #include "b2analytic/SurfaceQueries.h"
 #include "contact/OverlapParts.h"
 #include "contact/SolverCore.h"
-#include "geometry/SuperellipseTerms.h"
 #include "numerics/RootFinding.h"
 
 #include <algorithm>
@@ -516,15 +515,10 @@ bool LowestAlong(const ManifoldSide& b, Vec2 p, Vec2 n, Vec2& out)
 {
 	if (b.shape)
 	{
-		// B's near crossing of the line is its far crossing of the reversed line, where B has one.
-		// A raw-level superellipse (exponents ≥ 2, not both 2: its kind) takes Halley's steps on
-		// its own level from the face point, which lies near its surface.
+		// B's near crossing of the line is its far crossing of the reversed line, where B has one,
+		// from the face point, which lies near B's surface (FarCrossingNear).
 		double t = 0.0;
-		const bool raw = b.shape->Kind() == BuiltinKinds::superellipse;
-		const Vec2 x = ToBody(b.pose, p), d = InvRotate(b.pose.q, -n);
-		const SuperellipseShape* se = raw ? static_cast<const SuperellipseShape*>(b.shape) : nullptr;
-		if (raw ? SmoothFarCrossingFrom(se->Terms(), x, d, std::min(se->A(), se->B()), t)
-		        : b.shape->IsConvex() && b.shape->FarCrossing(x, d, t))
+		if (b.shape->IsConvex() && b.shape->FarCrossingNear(ToBody(b.pose, p), InvRotate(b.pose.q, -n), t))
 		{
 			out = p - t * n;
 			return true;

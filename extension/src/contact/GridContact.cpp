@@ -46,6 +46,25 @@ bool OneSideHolds(const Shape& p, const Pose& pp, const LevelResult& level, cons
 	return (ratio >= 0.25 && ratio <= 4.0) || std::fabs(c.separation - gap) <= 1e-9 * size;
 }
 
+// One side's grid solve (P rescaled onto Q's surface) and its contact, seen from P, flipped to be
+// seen from Q where `flip`; false where the solve failed. (One function for both sides: a call
+// for each side inlined twice made GridContact's code larger than it runs, and the heart contact's
+// code already exceeds the instruction cache.)
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+bool SolveSide(const Shape& p, const Pose& pp, const Shape& q, const Pose& pq, const SolverOptions& options, bool flip,
+               LevelResult& level, ContactResult& contact, Vec2& gradient)
+{
+	level = SolveGridScale(p, pp, q, pq, options, std::numeric_limits<double>::quiet_NaN(), &gradient);
+	if (!level.Ok())
+		return false;
+	contact = ContactFromLevelGiven(p, pp, q, pq, level, level.level <= p.SurfaceLevel(), true, &gradient);
+	if (flip)
+		contact = FlipContact(contact);
+	return true;
+}
+
 // A fixed order of poses that does not depend on which particle is called A: the grid's ties.
 std::tuple<double, double, double, double> PoseOrder(const Pose& p) { return std::make_tuple(p.p.x, p.p.y, p.q.c, p.q.s); }
 } // namespace
@@ -93,22 +112,8 @@ ContactResult GridContact(const Shape& a, const Pose& pa, const Shape& b, const 
 	LevelResult ab, ba;
 	ContactResult cab, cba;
 	Vec2 gab, gba;
-	auto solveAB = [&] {
-		ab = SolveGridScale(a, pa, b, pb, options, std::numeric_limits<double>::quiet_NaN(), &gab);
-		if (ab.Ok())
-		{
-			cab = ContactFromLevelGiven(a, pa, b, pb, ab, ab.level <= a.SurfaceLevel(), true, &gab);
-		}
-		return ab.Ok();
-	};
-	auto solveBA = [&] {
-		ba = SolveGridScale(b, pb, a, pa, options, std::numeric_limits<double>::quiet_NaN(), &gba);
-		if (ba.Ok())
-		{
-			cba = FlipContact(ContactFromLevelGiven(b, pb, a, pa, ba, ba.level <= b.SurfaceLevel(), true, &gba));
-		}
-		return ba.Ok();
-	};
+	auto solveAB = [&] { return SolveSide(a, pa, b, pb, options, false, ab, cab, gab); };
+	auto solveBA = [&] { return SolveSide(b, pb, a, pa, options, true, ba, cba, gba); };
 	const GridSide side = ChooseGridSide(a, pa, b, pb);
 	if (side == GridSide::aOntoB)
 	{

@@ -20,6 +20,17 @@ namespace b2a
 
 namespace
 {
+// The paths a grid solve seldom takes, out of line and apart from the hot code (GCC's cold
+// section): inlined, they spread the solve's code over more instruction-cache lines, and a heart
+// contact runs through more code than the cache holds, so every solve fetches its lines again.
+#if defined(__GNUC__)
+#define B2A_GRID_COLD __attribute__((noinline, cold))
+#define B2A_GRID_NOINLINE __attribute__((noinline))
+#else
+#define B2A_GRID_COLD
+#define B2A_GRID_NOINLINE
+#endif
+
 // A on B's level-LB surface, parametrised by B's polar angle θ, seen in A's body frame.
 struct SurfaceWalk
 {
@@ -66,6 +77,22 @@ inline bool WithinArc(Vec2 from, Vec2 to, Vec2 x)
 	return !(Cross(to, x) > 0.0 && Cross(x, from) > 0.0);
 }
 
+// Sorts the few entries a solve orders (the runs to scan, the minima, the scanned runs) by
+// insertion: where `less` is a strict total order (each use's is: no two entries tie), the order
+// std::sort gives, in a fraction of the code its introsort inlines.
+template <typename T, typename Less>
+void SortFew(T* first, T* last, Less less)
+{
+	for (T* i = first + (first < last ? 1 : 0); i < last; ++i)
+	{
+		const T x = *i;
+		T* j = i;
+		for (; j > first && less(x, *(j - 1)); --j)
+			*j = *(j - 1);
+		*j = x;
+	}
+}
+
 // Newton on the stationarity conditions of min λA over B's level-LB curve, in A's body frame:
 //   ∇λA(y) + μ∇λB(y) = 0,  λB(y) − LB = 0,
 // Jacobian [[HA + μHB, ∇λB], [∇λBᵀ, 0]]. Its tangential block tᵀ(HA + μHB)t, t ⟂ ∇λB, is the
@@ -107,15 +134,13 @@ bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, doubl
 		// lie within steps shorter than the neighbours' chord, each checked for curvature above.
 		const double r[3] = {-(dA.gradient.x + mu * gB.x), -(dA.gradient.y + mu * gB.y), -(dB.value - walk.levelB)};
 		double delta[3];
-		if (it == 0)
-		{
-			const Solve3Result s = SolveBordered(H.xx, H.xy, H.yy, gB.x, gB.y, gB.x, gB.y, r);
-			if (!(s.rcond > 1e-14))
-				return false;
-			std::copy(s.x, s.x + 3, delta);
-		}
-		else if (!SolveBorderedSolution(H.xx, H.xy, H.yy, gB.x, gB.y, gB.x, gB.y, r, delta))
+		// (SolveBordered's and SolveBorderedSolution's arithmetic, the adjugate written once.)
+		const BorderedAdjugate adj = AdjugateOfBordered(H.xx, H.xy, H.yy, gB.x, gB.y, gB.x, gB.y);
+		if (!(std::fabs(adj.det) > 0.0) || !std::isfinite(1.0 / adj.det))
 			return false;
+		if (it == 0 && !(BorderedRcond(adj, H.xx, H.xy, H.yy, gB.x, gB.y, gB.x, gB.y) > 1e-14))
+			return false;
+		ApplyAdjugate(adj, r, delta);
 		const Vec2 step(delta[0], delta[1]);
 		const double stepLength = Length(step);
 		if (!(stepLength <= reach))
@@ -246,7 +271,7 @@ bool CornerRayCrossing(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double& value,
 
 // Refine the sample minimum between its neighbours (angles lo < mid < hi) by bracketing: a root
 // of the slope where it changes sign, else a Brent minimisation of the value.
-void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double& value)
+B2A_GRID_COLD void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double& value)
 {
 	const double slo = walk.Slope(lo), shi = walk.Slope(hi);
 	double t = theta;
@@ -277,7 +302,7 @@ void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double
 // Beside a kink at `point` (B's corner, or the valley where a corner ray of A crosses B), a
 // smooth minimum may lie lower within the bracket [pl, ph]: Newton from each neighbour, held to
 // its side of the kink, and the lower answer kept.
-void NewtonBesideKink(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double reach, double& value, Vec2& point)
+B2A_GRID_NOINLINE void NewtonBesideKink(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double reach, double& value, Vec2& point)
 {
 	const Vec2 kink = point;
 	double v;
@@ -286,6 +311,47 @@ void NewtonBesideKink(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double reach, d
 		value = v, point = x;
 	if (RefineNewton(walk, kink, ph, ph, value, reach, v, x) && v < value)
 		value = v, point = x;
+}
+
+// RefineCandidate's last resorts, where Newton failed from both starts (seldom): A's corner rays
+// crossing the bracket, else the bracketing search.
+template <typename SamplePoint, typename MarkSolved>
+B2A_GRID_COLD void RefineWithoutNewton(const SurfaceWalk& walk, const SurfaceSamples& samples, int k,
+                                       const SamplePoint& samplePoint, const MarkSolved& markSolved, Vec2 pl, Vec2 ph,
+                                       double reach, double& value, Vec2& point)
+{
+	const int n = samples.Count();
+	// A's corner rays: the crossing in each of the two sample segments beside the sample that
+	// meets one. The corner-ray pass of SolveGridScale solves the same segments (of the scanned
+	// runs) the same way; the ones solved here are marked, and it skips them (it would solve
+	// them again, to the same crossing).
+	const Pose& bInA = walk.bInA;
+	bool crossed = false;
+	for (const int i : {(k + n - 1) % n, k})
+	{
+		const Vec2 p = ToWorld(bInA, samplePoint(i)), q = ToWorld(bInA, samplePoint((i + 1) % n));
+		if (!MeetsCornerRay(walk.a, p, q))
+			continue;
+		markSolved(i);
+		crossed = CornerRayCrossing(walk, p, q, value, point) || crossed;
+	}
+	if (crossed)
+	{
+		// Beside the valley a smooth minimum may lie lower in the same bracket (where Newton from
+		// the vertex and the sample, drawn into the valley, failed): Newton from each neighbour,
+		// held to its side of the crossing, as beside B's corners. Where the valley is the
+		// minimum, A's level is concave on both sides of it (|s|^{2/3}) and each stops at its
+		// first curvature test.
+		NewtonBesideKink(walk, pl, ph, reach, value, point);
+		return;
+	}
+	const double sampleTheta = samples.angle[k];
+	double lo, hi;
+	samples.NeighbourAngles(k, lo, hi);
+	double theta = sampleTheta;
+	Refine(walk, lo, hi, theta, value);
+	if (theta != sampleTheta)
+		point = walk.b.SurfacePoint(theta, walk.levelB);
 }
 
 // Refine sample k, a local minimum of the samples, to the minimum of λA along B's curve between
@@ -297,12 +363,10 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
                      const MarkSolved& markSolved, double valueBefore, double valueAfter, double& value, Vec2& point)
 {
 	const int n = samples.Count();
-	double lo, hi;
-	samples.NeighbourAngles(k, lo, hi);
 	const Vec2 pl = samplePoint((k + n - 1) % n), ph = samplePoint((k + 1) % n);
 	const double reach = Distance(pl, ph);
-	const double sampleTheta = samples.angle[k], sampleValue = value;
-	if (IsCorner(walk.b, sampleTheta))
+	const double sampleValue = value;
+	if (IsCorner(walk.b, samples.angle[k]))
 	{
 		// B's corner: its curve has no tangent there, so Newton cannot start on it. The corner
 		// is the minimum unless a smooth minimum lies beside it, lower, within the bracket (an
@@ -351,35 +415,9 @@ void RefineCandidate(const SurfaceWalk& walk, const SurfaceSamples& samples, int
 		point = vertexBetter ? vertexPoint : sampleStartPoint;
 		return;
 	}
-	// A's corner rays: the crossing in each of the two sample segments beside the sample that
-	// meets one. The corner-ray pass of SolveGridScale solves the same segments (of the scanned
-	// runs) the same way; the ones solved here are marked, and it skips them (it would solve
-	// them again, to the same crossing).
-	const Pose& bInA = walk.bInA;
-	bool crossed = false;
-	for (const int i : {(k + n - 1) % n, k})
-	{
-		const Vec2 p = ToWorld(bInA, samplePoint(i)), q = ToWorld(bInA, samplePoint((i + 1) % n));
-		if (!MeetsCornerRay(walk.a, p, q))
-			continue;
-		markSolved(i);
-		crossed = CornerRayCrossing(walk, p, q, value, point) || crossed;
-	}
-	if (crossed)
-	{
-		// Beside the valley a smooth minimum may lie lower in the same bracket (where Newton from
-		// the vertex and the sample, drawn into the valley, failed): Newton from each neighbour,
-		// held to its side of the crossing, as beside B's corners. Where the valley is the
-		// minimum, A's level is concave on both sides of it (|s|^{2/3}) and each stops at its
-		// first curvature test.
-		NewtonBesideKink(walk, pl, ph, reach, value, point);
-		return;
-	}
-	double theta = sampleTheta;
-	Refine(walk, lo, hi, theta, value);
-	if (theta != sampleTheta)
-		point = walk.b.SurfacePoint(theta, walk.levelB);
+	RefineWithoutNewton(walk, samples, k, samplePoint, markSolved, pl, ph, reach, value, point);
 }
+
 // SolveGridScale's work arrays, one set per thread.
 struct GridScratch
 {
@@ -402,6 +440,35 @@ struct GridScratch
 	std::uint64_t serialA = 0, serialB = 0;
 	const SurfaceSamples* samples = nullptr;
 	Pose bInA;
+	// Every array sized for n samples in `runs` runs and `groups` groups, the stamps cleared
+	// (the first call, or another sample count).
+	B2A_GRID_COLD void Size(int n, int runs, int groups)
+	{
+		stamp.assign(n, 0);
+		raySolved.assign(n, 0);
+		runStamp.assign(runs, 0);
+		boxStamp.assign(runs, 0);
+		generation = 0;
+		value.resize(n);
+		inA.resize(n);
+		bound.resize(runs);
+		boxBound.resize(runs);
+		groupBound.resize(groups);
+		discs.resize(std::max(groups, runs));
+		scanned.resize(runs);
+		scannedRuns.resize(runs);
+		order.resize(runs);
+		minima.resize(n);
+	}
+	// The stamps cleared, where the generation wrapped round.
+	B2A_GRID_COLD void ClearStamps()
+	{
+		std::fill(stamp.begin(), stamp.end(), 0u);
+		std::fill(raySolved.begin(), raySolved.end(), 0u);
+		std::fill(runStamp.begin(), runStamp.end(), 0u);
+		std::fill(boxStamp.begin(), boxStamp.end(), 0u);
+		generation = 1;
+	}
 	static GridScratch& ForThread()
 	{
 		thread_local GridScratch scratch;
@@ -467,12 +534,21 @@ private:
 	}
 	void Bound();
 	void ScanRun(int g);
+	// Run g, where its bound is at or below the lowest level found and it is not `best` (scanned
+	// already), added to the order of runs to scan (written always, counted where it belongs).
+	void AddToOrder(int g, int best, int& orderCount)
+	{
+		order[orderCount] = {bound[g], g};
+		orderCount += int(g != best) & int(bound[g] <= lowest);
+	}
 	void Scan();
-	void ScanAll();
+	B2A_GRID_COLD void ScanAll();
+	// Sample k a minimum of its neighbours' values: added to the minima. (Written always, counted
+	// where it is one: which samples are minima is data, a branch on it often mispredicted.)
 	void Consider(int k, int before, int after)
 	{
-		if (value[k] <= value[before] && value[k] < value[after])
-			minima[minimaCount++] = k;
+		minima[minimaCount] = k;
+		minimaCount += int(value[k] <= value[before]) & int(value[k] < value[after]);
 	}
 	void ConsiderRunEdge(int i);
 	void CollectMinima();
@@ -535,25 +611,12 @@ GridScan::GridScan(const Shape& a_, const Pose& pa_, const Shape& b_, const Pose
 	// clearing a call).
 	GridScratch& scratch = GridScratch::ForThread();
 	scratch.published = false;
-	if (int(scratch.stamp.size()) != n || int(scratch.runStamp.size()) != runs || ++scratch.generation == 0)
-	{
-		scratch.stamp.assign(n, 0);
-		scratch.raySolved.assign(n, 0);
-		scratch.runStamp.assign(runs, 0);
-		scratch.boxStamp.assign(runs, 0);
-		scratch.generation = 1;
-	}
+	if (int(scratch.stamp.size()) != n || int(scratch.runStamp.size()) != runs || int(scratch.groupBound.size()) != groups)
+		scratch.Size(n, runs, groups);
+	if (++scratch.generation == 0)
+		scratch.ClearStamps();
 	generation = scratch.generation;
-	scratch.value.resize(n);
-	scratch.inA.resize(n);
-	scratch.bound.resize(runs);
-	scratch.boxBound.resize(runs);
-	scratch.groupBound.resize(groups);
-	scratch.discs.resize(std::max(groups, runs));
-	scratch.scanned.assign(runs, 0);
-	scratch.scannedRuns.resize(runs);
-	scratch.order.resize(runs);
-	scratch.minima.resize(n);
+	std::fill(scratch.scanned.begin(), scratch.scanned.end(), char(0));
 	value = scratch.value.data();
 	stamp = scratch.stamp.data();
 	raySolved = scratch.raySolved.data();
@@ -657,17 +720,15 @@ void GridScan::Scan()
 			int first, last;
 			GroupRuns(G, first, last);
 			for (int g = first; g < last; ++g)
-				if (g != best && bound[g] <= lowest)
-					order[orderCount++] = {bound[g], g};
+				AddToOrder(g, best, orderCount);
 		}
 	}
 	else
 	{
 		for (int g = 0; g < runs; ++g)
-			if (g != best && bound[g] <= lowest)
-				order[orderCount++] = {bound[g], g};
+			AddToOrder(g, best, orderCount);
 	}
-	std::sort(order, order + orderCount);
+	SortFew(order, order + orderCount, [](const std::pair<double, int>& x, const std::pair<double, int>& y) { return x < y; });
 	for (int i = 0; i < orderCount; ++i)
 	{
 		const auto [runBound, g] = order[i];
@@ -726,7 +787,7 @@ void GridScan::CollectMinima()
 		Consider(n - 1, n - 2, 0);
 	}
 	if (bounded)
-		std::sort(scannedRuns, scannedRuns + scannedCount);
+		SortFew(scannedRuns, scannedRuns + scannedCount, [](int x, int y) { return x < y; });
 	for (int r = 0; r < scannedCount && ok && bounded; ++r)
 	{
 		const int g = scannedRuns[r];
@@ -753,7 +814,7 @@ void GridScan::CollectMinima()
 				lowestSample = k;
 		minima[minimaCount++] = lowestSample;
 	}
-	std::sort(minima, minima + minimaCount, [&](int i, int j) { return value[i] < value[j] || (value[i] == value[j] && i < j); });
+	SortFew(minima, minima + minimaCount, [&](int i, int j) { return value[i] < value[j] || (value[i] == value[j] && i < j); });
 	minimaCount = std::min(minimaCount, std::max(1, options.gridCandidates));
 }
 

@@ -1,8 +1,6 @@
 // b2analytic: analytic shape against a convex polygon or segment, by the separating axis.
 #include "b2analytic/PolygonContact.h"
 
-#include "b2analytic/HeartShape.h"
-#include "b2analytic/SuperellipseShape.h"
 #include "b2analytic/SurfaceQueries.h"
 #include "contact/ResultChecks.h"
 #include "numerics/RootFinding.h"
@@ -10,7 +8,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <typeinfo>
 #include <vector>
 
 namespace b2a
@@ -74,17 +71,17 @@ ContactResult SeparatingAxisContact(const Shape& a, const Pose& pa, const Vec2* 
 	double best = -std::numeric_limits<double>::infinity();
 	int bestFace = -1; // the face whose normal gave the best gap (-1: another direction)
 	Vec2 bestNormal, bestSupport;
-	// A superellipse bounds its support value below in closed form (SupportBounds: no roots of
-	// its exponent), a heart by its surface sample farthest along the direction (no Newton
-	// step): a candidate whose gap, with that bound in place of the support value, does not
-	// beat the best one found cannot win, and takes no support. Only the face normals near
-	// the contact's do; the wrong side of a segment and most of the 16 even directions stop here
-	// (24 supports a wall contact took, 4 or 5 now). The skip is exact: the computed gap,
-	// lowest − (support·n), exceeds lowest − p·n − h(Qᵀn) by the rounding of the support point
-	// and the dot products alone, a few 1e-16 of |p·n| + R + |lowest|, and `margin` is 1e-12 of
-	// that; so a skipped candidate's computed gap would not have passed g > best either, and the
-	// result is the one without the skip, bit for bit.
-	const bool cheapBounds = typeid(a) == typeid(SuperellipseShape) || typeid(a) == typeid(HeartShape);
+	// A shape whose SupportBounds are cheap (SupportBoundsCheap: a superellipse's closed form,
+	// no roots of its exponent; a heart's surface sample farthest along the direction, no Newton
+	// step) bounds its support value below first: a candidate whose gap, with that bound in place
+	// of the support value, does not beat the best one found cannot win, and takes no support.
+	// Only the face normals near the contact's do; the wrong side of a segment and most of the 16
+	// even directions stop here (24 supports a wall contact took, 4 or 5 now). The skip is exact:
+	// the computed gap, lowest − (support·n), exceeds lowest − p·n − h(Qᵀn) by the rounding of the
+	// support point and the dot products alone, a few 1e-16 of |p·n| + R + |lowest|, and `margin`
+	// is 1e-12 of that; so a skipped candidate's computed gap would not have passed g > best
+	// either, and the result is the one without the skip, bit for bit.
+	const bool cheapBounds = a.SupportBoundsCheap();
 	const double radius = a.BoundingRadius();
 	// `unit`: n is already a unit vector as Normalize leaves it (the even directions).
 	auto consider = [&](Vec2 n, int face, bool unit) {

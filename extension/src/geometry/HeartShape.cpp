@@ -28,6 +28,7 @@ HeartShape::HeartShape(double alpha) : Shape(BuiltinKinds::nonConvex, alpha, fal
 		throw InvalidParameter("heart", "alpha", "must be finite and > 0", alpha);
 	m_alphaSixth = std::pow(alpha, 1.0 / 6.0);
 	SetDerivativesCheap();
+	SetSupportBoundsCheap(); // (the surface sample farthest along the direction)
 	AddCorner(0.5 * kPi);  // notch
 	AddCorner(-0.5 * kPi); // tip
 	Finalize(-1.0, nullptr);

@@ -124,6 +124,7 @@ SuperellipseShape::SuperellipseShape(double a, double b, double n, double m, dou
 	RequireExponent(what, "n", n, 1.0);
 	RequireExponent(what, "m", m, 1.0);
 	SetDerivativesCheap(); // (the terms' powers serve the level and its derivatives alike)
+	SetSupportBoundsCheap(); // (nested bodies, no powers)
 
 	// An exponent of 1 puts a corner where its term vanishes: |x/a| at x = 0 (polar ±π/2),
 	// |y/b| at y = 0 (polar 0 and π, reported as −π).
@@ -236,6 +237,13 @@ bool SuperellipseShape::FarCrossing(Vec2 x, Vec2 d, double& t) const
 	// C = X² + Y² − 1; the far crossing is its larger root.
 	const double X = x.x * m_terms.invA, Y = x.y * m_terms.invB, D = d.x * m_terms.invA, E = d.y * m_terms.invB;
 	return QuadraticFarRoot(D * D + E * E, X * D + Y * E, (X * X + Y * Y) - 1.0, t) == LineQuadratic::crosses;
+}
+
+bool SuperellipseShape::FarCrossingNear(Vec2 x, Vec2 d, double& t) const
+{
+	if (Kind() != BuiltinKinds::superellipse)
+		return FarCrossing(x, d, t);
+	return SmoothFarCrossingFrom(m_terms, x, d, std::min(m_a, m_b), t);
 }
 
 bool SuperellipseShape::LevelSmoothOver(Vec2 centre, double radius) const

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 namespace b2a
 {
@@ -90,13 +91,15 @@ inline void ApplyAdjugate(const BorderedAdjugate& a, const double r[3], double x
 		x[i] = (a.c[i][0] * r[0] + a.c[i][1] * r[1] + a.c[i][2] * r[2]) * inv;
 }
 
-/// SolveBordered's rcond = 1 / (‖J‖₁ ‖J⁻¹‖₁) from J's adjugate `a`: 0 where det J is zero or not
-/// finite, or rcond or 1/det J is not finite (SolveBordered then solves nothing).
+/// SolveBordered's exact reciprocal condition number of the bordered matrix (its entries as
+/// SolveBordered takes them) whose adjugate is `a`; NaN where SolveBordered fails (det J zero or
+/// not finite, the condition number or 1/det not finite).
 inline double BorderedRcond(const BorderedAdjugate& a, double h11, double h12, double h22, double g1, double g2, double d1,
                             double d2)
 {
+	const double nan = std::numeric_limits<double>::quiet_NaN();
 	if (!(std::fabs(a.det) > 0.0) || !std::isfinite(a.det))
-		return 0.0;
+		return nan;
 	const double j0 = std::fabs(h11) + std::fabs(h12) + std::fabs(d1), j1 = std::fabs(h12) + std::fabs(h22) + std::fabs(d2),
 	             j2 = std::fabs(g1) + std::fabs(g2);
 	double k[3];
@@ -106,7 +109,7 @@ inline double BorderedRcond(const BorderedAdjugate& a, double h11, double h12, d
 	const double normC = k[0] > k[1] ? (k[0] > k[2] ? k[0] : k[2]) : (k[1] > k[2] ? k[1] : k[2]);
 	const double rcond = std::fabs(a.det) / (normJ * normC); // 1 / (‖J‖ · ‖adj J‖ / |det|)
 	if (!std::isfinite(rcond) || !std::isfinite(1.0 / a.det))
-		return 0.0;
+		return nan;
 	return rcond;
 }
 
@@ -117,9 +120,11 @@ inline Solve3Result SolveBordered(double h11, double h12, double h22, double g1,
 {
 	Solve3Result out;
 	const BorderedAdjugate a = AdjugateOfBordered(h11, h12, h22, g1, g2, d1, d2);
-	out.rcond = BorderedRcond(a, h11, h12, h22, g1, g2, d1, d2);
-	if (out.rcond > 0.0)
-		ApplyAdjugate(a, r, out.x);
+	const double rcond = BorderedRcond(a, h11, h12, h22, g1, g2, d1, d2);
+	if (std::isnan(rcond))
+		return out;
+	out.rcond = rcond;
+	ApplyAdjugate(a, r, out.x);
 	return out;
 }
 
