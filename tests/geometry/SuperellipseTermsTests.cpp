@@ -55,6 +55,15 @@ long double ReferenceFarCrossing(const SuperellipseShape& s, Vec2 x, Vec2 d)
 	}
 	return inside;
 }
+// Every value of `fast` equal to RawSuperellipseDerivatives' at the same point, bit for bit.
+void CheckSameAsRaw(const AxisDerivatives& fast, const LevelDerivatives& raw)
+{
+	CHECK(fast.f == raw.value);
+	CHECK(fast.gx == raw.gradient.x);
+	CHECK(fast.gy == raw.gradient.y);
+	CHECK(fast.hx == raw.hessian.xx);
+	CHECK(fast.hy == raw.hessian.yy);
+}
 } // namespace
 
 TEST_CASE("superellipse terms: IntegerSuperellipseDerivatives is RawSuperellipseDerivatives, bit for bit, for integer exponents")
@@ -76,12 +85,7 @@ TEST_CASE("superellipse terms: IntegerSuperellipseDerivatives is RawSuperellipse
 				if (k % 10 == 1) x.y = 0.0;
 				if (k % 10 == 2) x = -x;
 				const LevelDerivatives raw = RawSuperellipseDerivatives(t, x);
-				const AxisDerivatives fast = IntegerSuperellipseDerivatives(t, x.x, x.y);
-				CHECK(fast.f == raw.value);
-				CHECK(fast.gx == raw.gradient.x);
-				CHECK(fast.gy == raw.gradient.y);
-				CHECK(fast.hx == raw.hessian.xx);
-				CHECK(fast.hy == raw.hessian.yy);
+				CheckSameAsRaw(IntegerSuperellipseDerivatives(t, x.x, x.y), raw);
 				++compared;
 			}
 		}
@@ -89,6 +93,39 @@ TEST_CASE("superellipse terms: IntegerSuperellipseDerivatives is RawSuperellipse
 	// Real exponents and exponents below 2 are not integer terms.
 	CHECK_FALSE(IntegerExponents(SuperellipseShape(1.0, 1.0, 2.5, 4.0).Terms()));
 	CHECK_FALSE(IntegerExponents(SuperellipseShape(1.0, 1.0, 4.0, 1.0).Terms()));
+}
+
+TEST_CASE("superellipse terms: IntegerSuperellipseDerivativesEqual is RawSuperellipseDerivatives, bit for bit, for n = m")
+{
+	// Both axes in the lanes of SSE2 registers (PowAbsPair): each lane's operations are the
+	// scalar code's, so every value is equal, for every exponent PowAbs multiplies out (2 to 10)
+	// and those it loops for (12, 20, 33), on the axes, of both signs and far out; NaN stays NaN.
+	Random rng(6);
+	int compared = 0;
+	for (int n : {2, 3, 4, 5, 6, 7, 8, 9, 10, 12, 20, 33})
+	{
+		const SuperellipseShape s(rng.LogUniform(0.1, 10.0), rng.LogUniform(0.1, 10.0), n, n);
+		const SuperellipseTerms& t = s.Terms();
+		REQUIRE(t.nInt == t.mInt);
+		for (int k = 0; k < 400; ++k)
+		{
+			Vec2 x(rng.Uniform(-2.0, 2.0) * s.A(), rng.Uniform(-2.0, 2.0) * s.B());
+			if (k % 10 == 0) x.x = 0.0;
+			if (k % 10 == 1) x.y = -0.0;
+			if (k % 10 == 2) x = -x;
+			if (k % 10 == 3) x = 1e3 * x;
+			const LevelDerivatives raw = RawSuperellipseDerivatives(t, x);
+			CAPTURE(n);
+			CAPTURE(x.x);
+			CAPTURE(x.y);
+			CheckSameAsRaw(IntegerSuperellipseDerivativesEqual(t, x.x, x.y), raw);
+			++compared;
+		}
+	}
+	CHECK(compared == 4800);
+	const AxisDerivatives nan = IntegerSuperellipseDerivativesEqual(SuperellipseShape(1.0, 0.5, 4.0, 4.0).Terms(), std::nan(""), 0.2);
+	CHECK(std::isnan(nan.f));
+	CHECK(std::isnan(nan.gx));
 }
 
 TEST_CASE("superellipse terms: SmoothSuperellipseDerivatives is RawSuperellipseDerivatives for exponents >= 2, and the closed forms")

@@ -182,6 +182,30 @@ TEST_CASE("powers: CubeRootPair is CubeRoot bit for bit in both lanes, at every 
 }
 #endif
 
+TEST_CASE("powers: CubeRoots is CubeRoot bit for bit for both values, in the pair's range and outside it")
+{
+	// Both in CubeRoot's main range: CubeRootPair; either outside it (zero, tiny, huge,
+	// infinite, NaN): CubeRoot each. The values are CubeRoot's either way.
+	auto same = [](double x, double y) {
+		double cx = -1.0, cy = -1.0;
+		CubeRoots(x, y, cx, cy);
+		CAPTURE(x);
+		CAPTURE(y);
+		const double rx = CubeRoot(x), ry = CubeRoot(y);
+		CHECK((cx == rx || (std::isnan(cx) && std::isnan(rx))));
+		CHECK((cy == ry || (std::isnan(cy) && std::isnan(ry))));
+		CHECK(std::signbit(cx) == std::signbit(rx));
+		CHECK(std::signbit(cy) == std::signbit(ry));
+	};
+	Random rng(13);
+	for (int k = 0; k < 20000; ++k)
+		same(std::exp(rng.Uniform(-667.0, 667.0)), std::exp(rng.Uniform(-667.0, 667.0)));
+	const double special[] = {0.0, 1e-300, 1e-290, 1e290, 1e300, std::numeric_limits<double>::infinity(), std::nan(""), 0.7};
+	for (double x : special)
+		for (double y : special)
+			same(x, y);
+}
+
 TEST_CASE("powers: CubeRoot keeps zero with its sign and hands the ends of the range, infinities and NaN to std::cbrt")
 {
 	CHECK(CubeRoot(0.0) == 0.0);

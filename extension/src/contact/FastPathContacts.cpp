@@ -8,6 +8,7 @@
 #include "contact/SolverCore.h"
 #include "contact/WarmSlide.h"
 #include "geometry/SuperellipseTerms.h"
+#include "numerics/CodeLayout.h"
 
 #include <cmath>
 
@@ -95,6 +96,46 @@ ContactResult EllipsePairContact(const Shape& a, const Pose& pa, const Shape& b,
 	return c;
 }
 
+namespace
+{
+// SuperellipsePairContact's full solve (a cold start handed over to the finish where it can be,
+// or a warm finish that declined): out of line, so that the warm finish's path through
+// SuperellipsePairContact, taken by most contacts at most steps, stays in a few instruction
+// cache lines. The contact is built in c (the caller's result).
+B2A_NOINLINE void SolvedSuperellipsePairContact(const SuperellipseShape& sa, const Pose& pa, const SuperellipseShape& sb,
+                                                const Pose& pb, const SolverOptions& options, WarmStart* warm,
+                                                SuperellipseHandOver* hand, ContactResult& c)
+{
+	const Shape &a = sa, &b = sb;
+	SuperellipsePairPoint at;
+	LevelResult level = SolveSuperellipsePairLevel(sa, pa, sb, pb, options, warm, &at, hand);
+	CheckResult(level);
+	if (hand && hand->taken)
+	{
+		if (FinishSuperellipseContact(sa, pa, sb, pb, options, hand->point, hand->multiplier, hand->iterations, warm, c))
+			return;
+		level = SolveSuperellipsePairLevel(sa, pa, sb, pb, options, warm, &at);
+		CheckResult(level);
+	}
+	if (!level.Ok() || !at.valid)
+		return;
+	RecordWarmStart(warm, pa, pb, level, &at.slide);
+	TakeOverLevel(c, level);
+	// ContactNormal's mean of the unit normals (they are opposed: the solve checked).
+	c.normal = Normalize(Normalize(at.gradA) - Normalize(at.gradB));
+	// ContactFromLevel's points, the first step of each line crossing from the level and
+	// gradient the solve ended with.
+	const double knownA[2] = {at.levelA, Dot(at.gradA, c.normal)}, knownB[2] = {at.levelB, -Dot(at.gradB, c.normal)};
+	if (!SuperellipseLinePoint(sa, pa, level.point, c.normal, knownA, c.pointA) ||
+	    !SuperellipseLinePoint(sb, pb, level.point, -c.normal, knownB, c.pointB))
+	{
+		c = ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
+		return;
+	}
+	SetSeparation(c, level.level <= 1.0);
+}
+} // namespace
+
 ContactResult SuperellipsePairContact(const Shape& a, const Pose& pa, const Shape& b, const Pose& pb,
                                       const SolverOptions& options, WarmStart* warm)
 {
@@ -136,32 +177,7 @@ ContactResult SuperellipsePairContact(const Shape& a, const Pose& pa, const Shap
 				handOver.below = 0.1;
 		}
 	}
-	SuperellipsePairPoint at;
-	LevelResult level = SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at, hand);
-	CheckResult(level);
-	if (handOver.taken)
-	{
-		if (FinishSuperellipseContact(*sa, pa, *sb, pb, options, handOver.point, handOver.multiplier, handOver.iterations, warm, c))
-			return c;
-		level = SolveSuperellipsePairLevel(*sa, pa, *sb, pb, options, warm, &at);
-		CheckResult(level);
-	}
-	if (!level.Ok() || !at.valid)
-		return c;
-	RecordWarmStart(warm, pa, pb, level, &at.slide);
-	TakeOverLevel(c, level);
-	// ContactNormal's mean of the unit normals (they are opposed: the solve checked).
-	c.normal = Normalize(Normalize(at.gradA) - Normalize(at.gradB));
-	// ContactFromLevel's points, the first step of each line crossing from the level and
-	// gradient the solve ended with.
-	const double knownA[2] = {at.levelA, Dot(at.gradA, c.normal)}, knownB[2] = {at.levelB, -Dot(at.gradB, c.normal)};
-	if (!SuperellipseLinePoint(*sa, pa, level.point, c.normal, knownA, c.pointA) ||
-	    !SuperellipseLinePoint(*sb, pb, level.point, -c.normal, knownB, c.pointB))
-	{
-		c = ContactFromLevel(a, pa, b, pb, level, level.level <= 1.0);
-		return c;
-	}
-	SetSeparation(c, level.level <= 1.0);
+	SolvedSuperellipsePairContact(*sa, pa, *sb, pb, options, warm, hand, c);
 	return c;
 }
 

@@ -7,6 +7,7 @@
 
 #include "b2analytic/SuperellipseShape.h"
 #include "geometry/SuperellipseTerms.h"
+#include "numerics/CodeLayout.h"
 #include "numerics/SmallLinear.h"
 
 #include <algorithm>
@@ -42,11 +43,15 @@ inline bool LipschitzHessian(const SuperellipseTerms& t)
 template <bool Real>
 inline AxisDerivatives AxisDerivativesOf(const SuperellipseTerms& t, Vec2 x)
 {
-	return Real ? SmoothSuperellipseDerivatives(t, x.x, x.y) : IntegerSuperellipseDerivatives(t, x.x, x.y);
+	if (Real)
+		return SmoothSuperellipseDerivatives(t, x.x, x.y);
+	return t.nInt == t.mInt ? IntegerSuperellipseDerivativesEqual(t, x.x, x.y) : IntegerSuperellipseDerivatives(t, x.x, x.y);
 }
 
+// Out of line, one copy for the start and the steps: a warm contact runs it two or three times
+// among much other code, where each inlined copy cost instruction cache lines of its own.
 template <bool Real>
-inline void EvaluatePair(const SuperellipseTerms& ta, const SuperellipseTerms& tb, const Pose& rel, Vec2 x, PairDerivatives& e)
+B2A_NOINLINE void EvaluatePair(const SuperellipseTerms& ta, const SuperellipseTerms& tb, const Pose& rel, Vec2 x, PairDerivatives& e)
 {
 	const AxisDerivatives da = AxisDerivativesOf<Real>(ta, x);
 	e.fA = da.f;
@@ -58,6 +63,14 @@ inline void EvaluatePair(const SuperellipseTerms& ta, const SuperellipseTerms& t
 	e.fB = db.f;
 	e.gB = Rotate(rel.q, Vec2(db.gx, db.gy));
 	e.hB = Sym22{c * c * db.hx + s * s * db.hy, c * s * (db.hx - db.hy), s * s * db.hx + c * c * db.hy};
+}
+
+// RawConditionsHold's test beyond ConditionsWithin (ConditionsHold's residual and floors), rarely
+// reached: out of line.
+B2A_COLD bool RawConditionsHoldBeyond(const PairDerivatives& e, double reach2)
+{
+	const double eps = std::numeric_limits<double>::epsilon();
+	return ConditionsHold(e.fA, e.fB, e.gA, e.gB, e.hA, e.hB, eps * std::sqrt(reach2), 1.0);
 }
 
 // Whether the raw levels at x solve the conditions (ConditionsHold: their mismatch and the
@@ -72,8 +85,7 @@ bool RawConditionsHold(const PairDerivatives& e, Vec2 x, const Pose& rel, const 
 	const double reach2 = std::max({LengthSquared(x), LengthSquared(rel.p), LengthSquared(pa.p), LengthSquared(pb.p)});
 	if (!RoundingKeepsNormals(e.gA, e.gB, e.hA, e.hB, eps * eps * reach2))
 		return false;
-	return ConditionsWithin(e.fA, e.fB, e.gA, e.gB, 1e-11, 1e-11) ||
-	       ConditionsHold(e.fA, e.fB, e.gA, e.gB, e.hA, e.hB, eps * std::sqrt(reach2), 1.0);
+	return ConditionsWithin(e.fA, e.fB, e.gA, e.gB, 1e-11, 1e-11) || RawConditionsHoldBeyond(e, reach2);
 }
 
 // Newton on the raw levels from (x, μ) with the pair evaluated there in e: plain steps, with no
@@ -108,16 +120,15 @@ bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb,
 		const double minusR[3] = {-(e.gA.x + mu * e.gB.x), -(e.gA.y + mu * e.gB.y), e.fB - e.fA};
 		const double hxx = e.hA.xx + mu * e.hB.xx, hxy = e.hA.xy + mu * e.hB.xy, hyy = e.hA.yy + mu * e.hB.yy;
 		const double dxA = e.gA.x - e.gB.x, dyA = e.gA.y - e.gB.y;
-		double delta[3];
-		if (it == 1)
-		{
-			const Solve3Result step = SolveBordered(hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA, minusR);
-			if (!BorderedStepUsable(step.rcond, hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA))
-				return false;
-			std::copy(step.x, step.x + 3, delta);
-		}
-		else if (!SolveBorderedSolution(hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA, minusR, delta))
+		// (One adjugate for both cases, SolveBordered's at the first step and SolveBorderedSolution's
+		// after: the same values, in one copy of the code.)
+		const BorderedAdjugate adjugate = AdjugateOfBordered(hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA);
+		if (it == 1 ? !BorderedStepUsable(BorderedRcond(adjugate, hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA), hxx, hxy, hyy, e.gB.x,
+		                                  e.gB.y, dxA, dyA)
+		            : (!(std::fabs(adjugate.det) > 0.0) || !std::isfinite(1.0 / adjugate.det)))
 			return false;
+		double delta[3];
+		ApplyAdjugate(adjugate, minusR, delta);
 		const Vec2 dx(delta[0], delta[1]);
 		const double dmu = delta[2];
 		// The steps in x (world lengths) and in μ; the bounds on μ's step are relative, so they
@@ -157,6 +168,27 @@ bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb,
 	}
 }
 
+// The far crossing by SuperellipseFarCrossing where the Halley steps declined, and the contact by
+// ContactFromLevel where a line misses a particle: rare, and kept out of line (cold), so that the
+// common path's code stays in fewer instruction cache lines.
+B2A_COLD bool FallbackFarCrossing(const SuperellipseTerms& t, Vec2 x, Vec2 d, double& at)
+{
+	return SuperellipseFarCrossing(t, x, d, at);
+}
+B2A_COLD void FallbackContact(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb, Vec2 x,
+                              double mu, Vec2 normal, double level, int iterations, ContactResult& contact)
+{
+	LevelResult solved;
+	solved.status = SolveStatus::converged;
+	solved.method = SolveMethod::newton;
+	solved.iterations = iterations;
+	solved.level = level;
+	solved.point = ToWorld(pa, x);
+	solved.normal = normal;
+	solved.multiplier = mu;
+	contact = ContactFromLevel(a, pa, b, pb, solved, level <= 1.0);
+}
+
 // The contact at the solved point x (A's frame) with its normal n there: where the line through
 // x along n leaves A last and enters B first (ContactFromLevel's rule), x itself where it lies
 // on the surface to 1e-10 of the level; where the line misses a particle, ContactFromLevel's
@@ -176,8 +208,8 @@ void ContactAt(const SuperellipseShape& a, const Pose& pa, const SuperellipseSha
 		crossB.state = SmoothCrossing::State::found;
 	SmoothFarCrossings(crossA, crossB);
 	double tA = crossA.t, tB = crossB.t;
-	const bool onA = crossA.state == SmoothCrossing::State::found || SuperellipseFarCrossing(ta, x, n, tA);
-	const bool onB = onA && (crossB.state == SmoothCrossing::State::found || SuperellipseFarCrossing(tb, e.xB, nB, tB));
+	const bool onA = crossA.state == SmoothCrossing::State::found || FallbackFarCrossing(ta, x, n, tA);
+	const bool onB = onA && (crossB.state == SmoothCrossing::State::found || FallbackFarCrossing(tb, e.xB, nB, tB));
 	// The world normal is normalised after the turn, as ContactFromLevel's is: a pose built from
 	// Box2D's float rotation is off unit length by up to 1e-7, and so would be Rotate(pa.q, n).
 	const Vec2 normal = Normalize(Rotate(pa.q, n));
@@ -195,15 +227,7 @@ void ContactAt(const SuperellipseShape& a, const Pose& pa, const SuperellipseSha
 		SetSeparation(contact, e.fA <= 1.0);
 		return;
 	}
-	LevelResult level;
-	level.status = SolveStatus::converged;
-	level.method = SolveMethod::newton;
-	level.iterations = iterations;
-	level.level = e.fA;
-	level.point = ToWorld(pa, x);
-	level.normal = normal;
-	level.multiplier = mu;
-	contact = ContactFromLevel(a, pa, b, pb, level, e.fA <= 1.0);
+	FallbackContact(a, pa, b, pb, x, mu, normal, e.fA, iterations, contact);
 }
 
 } // namespace

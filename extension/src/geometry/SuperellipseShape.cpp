@@ -320,7 +320,9 @@ double SuperellipseShape::SupportValue(Vec2 d) const
 	if (m_n == 4.0)
 	{
 		// q = 4/3: t = ex^{4/3} + ey^{4/3}, h = t^{3/4} = √t·⁴√t.
-		const double t = ex * CubeRoot(ex) + ey * CubeRoot(ey);
+		double cx, cy;
+		CubeRoots(ex, ey, cx, cy);
+		const double t = ex * cx + ey * cy;
 		const double r = std::sqrt(t);
 		return r * std::sqrt(r);
 	}
@@ -355,7 +357,8 @@ Vec2 SuperellipseShape::SupportNear(Vec2 d, int lagrangeSteps) const
 		if (p == 4.0)
 		{
 			// q = 4/3: |e_i|^{1/3} by CubeRoot, and ‖e‖_q^{1/3} = (Σ|e_i|^{4/3})^{1/4} by two roots.
-			const double px = CubeRoot(std::fabs(e.x)), py = CubeRoot(std::fabs(e.y));
+			double px, py;
+			CubeRoots(std::fabs(e.x), std::fabs(e.y), px, py);
 			const double norm = std::sqrt(std::sqrt(px * std::fabs(e.x) + py * std::fabs(e.y)));
 			return Vec2(m_a * SignOf(e.x) * px / norm, m_b * SignOf(e.y) * py / norm);
 		}

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace b2a
 {
@@ -91,6 +92,55 @@ inline AxisDerivatives IntegerSuperellipseDerivatives(const SuperellipseTerms& t
 	const double xn1 = xn2 * ax, ym1 = ym2 * ay;
 	return {xn1 * ax + ym1 * ay, t.gradX * std::copysign(xn1, X), t.gradY * std::copysign(ym1, Y), t.hessX * xn2,
 	        t.hessY * ym2};
+}
+
+#if defined(B2A_SSE2_PAIRS)
+/// PowAbs(t, ·, k) of both lanes of t ≥ 0 for one integer k ≥ 0: its products in its order, lane by
+/// lane, so that each lane is PowAbs's bit for bit (k = 5 and k > 8 go to PowAbs lane by lane).
+inline __m128d PowAbsPair(__m128d t, int k)
+{
+	switch (k)
+	{
+	case 0: return _mm_set1_pd(1.0);
+	case 1: return t;
+	case 2: return _mm_mul_pd(t, t);
+	case 3: return _mm_mul_pd(_mm_mul_pd(t, t), t);
+	case 4: { const __m128d t2 = _mm_mul_pd(t, t); return _mm_mul_pd(t2, t2); }
+	case 6: { const __m128d t3 = _mm_mul_pd(_mm_mul_pd(t, t), t); return _mm_mul_pd(t3, t3); }
+	case 7: { const __m128d t2 = _mm_mul_pd(t, t), t3 = _mm_mul_pd(t2, t); return _mm_mul_pd(_mm_mul_pd(t3, t3), t); }
+	case 8: { const __m128d t2 = _mm_mul_pd(t, t), t4 = _mm_mul_pd(t2, t2); return _mm_mul_pd(t4, t4); }
+	default: break;
+	}
+	const double t0 = _mm_cvtsd_f64(t), t1 = _mm_cvtsd_f64(_mm_unpackhi_pd(t, t));
+	return _mm_set_pd(PowAbs(t1, 0.0, k), PowAbs(t0, 0.0, k));
+}
+#endif
+
+/// IntegerSuperellipseDerivatives, bit for bit, where n = m (nInt = mInt): the x and y axes in the
+/// two lanes of SSE2 registers (each lane's operations are the scalar code's, in its order), one
+/// power for both. Half the instructions of the scalar code, in a contact's every Newton step.
+inline AxisDerivatives IntegerSuperellipseDerivativesEqual(const SuperellipseTerms& t, double x, double y)
+{
+#if defined(B2A_SSE2_PAIRS)
+	static_assert(offsetof(SuperellipseTerms, invB) == offsetof(SuperellipseTerms, invA) + sizeof(double) &&
+	                  offsetof(SuperellipseTerms, gradY) == offsetof(SuperellipseTerms, gradX) + sizeof(double) &&
+	                  offsetof(SuperellipseTerms, hessY) == offsetof(SuperellipseTerms, hessX) + sizeof(double),
+	              "each pair of terms is two adjacent doubles");
+	const __m128d sign = _mm_set1_pd(-0.0);
+	const __m128d XY = _mm_mul_pd(_mm_set_pd(y, x), _mm_loadu_pd(&t.invA)); // X = x/a, Y = y/b
+	const __m128d a = _mm_andnot_pd(sign, XY);                             // |X|, |Y|
+	const __m128d p2 = PowAbsPair(a, t.nInt - 2), p1 = _mm_mul_pd(p2, a); // |X|^{n−2}, |X|^{n−1}
+	const __m128d terms = _mm_mul_pd(p1, a);
+	const __m128d grad = _mm_mul_pd(_mm_loadu_pd(&t.gradX), _mm_or_pd(p1, _mm_and_pd(sign, XY))); // copysign
+	const __m128d hess = _mm_mul_pd(_mm_loadu_pd(&t.hessX), p2);
+	AxisDerivatives d;
+	d.f = _mm_cvtsd_f64(terms) + _mm_cvtsd_f64(_mm_unpackhi_pd(terms, terms));
+	_mm_storeu_pd(&d.gx, grad);
+	_mm_storeu_pd(&d.hx, hess);
+	return d;
+#else
+	return IntegerSuperellipseDerivatives(t, x, y);
+#endif
 }
 
 /// Whether both exponents are at least 2 (SmoothSuperellipseDerivatives applies): f is then
@@ -339,20 +389,27 @@ inline bool SmoothFarCrossingFrom(const SuperellipseTerms& s, Vec2 x, Vec2 d, do
 	return SmoothFarCrossing(s, x, d, known, unit, t) || SuperellipseFarCrossing(s, x, d, t, known);
 }
 
-/// Two independent crossings, interleaved a step at a time (up to 8 steps each); each ends found
-/// or failed, with the same steps and the same answer as when run alone.
+/// Two independent crossings, interleaved a step at a time (up to 8 steps each: a's first, then
+/// b's, then a's second, ...); each ends found or failed, with the same steps and the same answer
+/// as when run alone.
+/// One copy of the step serves both (a loop over the pair, not unrolled): a warm contact runs this
+/// once among much other code, and two inlined copies of the step were twice the instruction
+/// cache lines it needs there. The two chains still overlap in the processor (a step's division
+/// and evaluation wait on its own crossing only).
 inline void SmoothFarCrossings(SmoothCrossing& a, SmoothCrossing& b)
 {
 	using State = SmoothCrossing::State;
-	for (int it = 0; it < 8; ++it)
+	SmoothCrossing* const both[2] = {&a, &b};
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC unroll 1
+#endif
+	for (int k = 0; k < 16; ++k)
 	{
-		const bool runA = a.state == State::running, runB = b.state == State::running;
-		if (!runA && !runB)
+		if (a.state != State::running && b.state != State::running)
 			return;
-		if (runA)
-			a.Step();
-		if (runB)
-			b.Step();
+		SmoothCrossing& c = *both[k & 1];
+		if (c.state == State::running)
+			c.Step();
 	}
 	if (a.state == State::running)
 		a.state = State::failed;
