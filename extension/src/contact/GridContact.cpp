@@ -3,6 +3,7 @@
 
 #include "contact/GridScale.h"
 #include "contact/PairFrame.h"
+#include "numerics/CodeLayout.h"
 
 #include <cmath>
 #include <limits>
@@ -47,13 +48,10 @@ bool OneSideHolds(const Shape& p, const Pose& pp, const LevelResult& level, cons
 }
 
 // One side's grid solve (P rescaled onto Q's surface) and its contact, seen from P, flipped to be
-// seen from Q where `flip`; false where the solve failed. (One function for both sides: a call
-// for each side inlined twice made GridContact's code larger than it runs, and the heart contact's
-// code already exceeds the instruction cache.)
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-bool SolveSide(const Shape& p, const Pose& pp, const Shape& q, const Pose& pq, const SolverOptions& options, bool flip,
+// seen from Q where `flip`; false where the solve failed. (One out-of-line function for both
+// sides: inlined at each call, the solve would be in GridContact's code twice, and the heart
+// contact's code already exceeds the instruction cache.)
+B2A_NOINLINE bool SolveSide(const Shape& p, const Pose& pp, const Shape& q, const Pose& pq, const SolverOptions& options, bool flip,
                LevelResult& level, ContactResult& contact, Vec2& gradient)
 {
 	level = SolveGridScale(p, pp, q, pq, options, std::numeric_limits<double>::quiet_NaN(), &gradient);

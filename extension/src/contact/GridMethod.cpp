@@ -5,6 +5,7 @@
 #include "contact/LevelAlongLine.h"
 #include "contact/PairFrame.h"
 #include "contact/SampleRuns.h"
+#include "numerics/CodeLayout.h"
 #include "numerics/RootFinding.h"
 #include "numerics/SmallLinear.h"
 
@@ -20,16 +21,9 @@ namespace b2a
 
 namespace
 {
-// The paths a grid solve seldom takes, out of line and apart from the hot code (GCC's cold
-// section): inlined, they spread the solve's code over more instruction-cache lines, and a heart
+// The paths a grid solve seldom takes are out of line and apart from the hot code (B2A_COLD):
+// inlined, they would spread the solve's code over more instruction-cache lines, and a heart
 // contact runs through more code than the cache holds, so every solve fetches its lines again.
-#if defined(__GNUC__)
-#define B2A_GRID_COLD __attribute__((noinline, cold))
-#define B2A_GRID_NOINLINE __attribute__((noinline))
-#else
-#define B2A_GRID_COLD
-#define B2A_GRID_NOINLINE
-#endif
 
 // A on B's level-LB surface, parametrised by B's polar angle θ, seen in A's body frame.
 struct SurfaceWalk
@@ -136,7 +130,7 @@ bool RefineNewton(const SurfaceWalk& walk, Vec2 from, Vec2 to, Vec2 start, doubl
 		double delta[3];
 		// (SolveBordered's and SolveBorderedSolution's arithmetic, the adjugate written once.)
 		const BorderedAdjugate adj = AdjugateOfBordered(H.xx, H.xy, H.yy, gB.x, gB.y, gB.x, gB.y);
-		if (!(std::fabs(adj.det) > 0.0) || !std::isfinite(1.0 / adj.det))
+		if (!AdjugateInvertible(adj))
 			return false;
 		if (it == 0 && !(BorderedRcond(adj, H.xx, H.xy, H.yy, gB.x, gB.y, gB.x, gB.y) > 1e-14))
 			return false;
@@ -271,7 +265,7 @@ bool CornerRayCrossing(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double& value,
 
 // Refine the sample minimum between its neighbours (angles lo < mid < hi) by bracketing: a root
 // of the slope where it changes sign, else a Brent minimisation of the value.
-B2A_GRID_COLD void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double& value)
+B2A_COLD void Refine(const SurfaceWalk& walk, double lo, double hi, double& theta, double& value)
 {
 	const double slo = walk.Slope(lo), shi = walk.Slope(hi);
 	double t = theta;
@@ -302,7 +296,7 @@ B2A_GRID_COLD void Refine(const SurfaceWalk& walk, double lo, double hi, double&
 // Beside a kink at `point` (B's corner, or the valley where a corner ray of A crosses B), a
 // smooth minimum may lie lower within the bracket [pl, ph]: Newton from each neighbour, held to
 // its side of the kink, and the lower answer kept.
-B2A_GRID_NOINLINE void NewtonBesideKink(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double reach, double& value, Vec2& point)
+B2A_NOINLINE void NewtonBesideKink(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, double reach, double& value, Vec2& point)
 {
 	const Vec2 kink = point;
 	double v;
@@ -316,7 +310,7 @@ B2A_GRID_NOINLINE void NewtonBesideKink(const SurfaceWalk& walk, Vec2 pl, Vec2 p
 // RefineCandidate's last resorts, where Newton failed from both starts (seldom): A's corner rays
 // crossing the bracket, else the bracketing search.
 template <typename SamplePoint, typename MarkSolved>
-B2A_GRID_COLD void RefineWithoutNewton(const SurfaceWalk& walk, const SurfaceSamples& samples, int k,
+B2A_COLD void RefineWithoutNewton(const SurfaceWalk& walk, const SurfaceSamples& samples, int k,
                                        const SamplePoint& samplePoint, const MarkSolved& markSolved, Vec2 pl, Vec2 ph,
                                        double reach, double& value, Vec2& point)
 {
@@ -442,7 +436,7 @@ struct GridScratch
 	Pose bInA;
 	// Every array sized for n samples in `runs` runs and `groups` groups, the stamps cleared
 	// (the first call, or another sample count).
-	B2A_GRID_COLD void Size(int n, int runs, int groups)
+	B2A_COLD void Size(int n, int runs, int groups)
 	{
 		stamp.assign(n, 0);
 		raySolved.assign(n, 0);
@@ -461,7 +455,7 @@ struct GridScratch
 		minima.resize(n);
 	}
 	// The stamps cleared, where the generation wrapped round.
-	B2A_GRID_COLD void ClearStamps()
+	B2A_COLD void ClearStamps()
 	{
 		std::fill(stamp.begin(), stamp.end(), 0u);
 		std::fill(raySolved.begin(), raySolved.end(), 0u);
@@ -542,7 +536,7 @@ private:
 		orderCount += int(g != best) & int(bound[g] <= lowest);
 	}
 	void Scan();
-	B2A_GRID_COLD void ScanAll();
+	B2A_COLD void ScanAll();
 	// Sample k a minimum of its neighbours' values: added to the minima. (Written always, counted
 	// where it is one: which samples are minima is data, a branch on it often mispredicted.)
 	void Consider(int k, int before, int after)

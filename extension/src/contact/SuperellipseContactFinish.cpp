@@ -49,7 +49,7 @@ inline AxisDerivatives AxisDerivativesOf(const SuperellipseTerms& t, Vec2 x)
 }
 
 // Out of line, one copy for the start and the steps: a warm contact runs it two or three times
-// among much other code, where each inlined copy cost instruction cache lines of its own.
+// among much other code, where each inlined copy would take instruction cache lines of its own.
 template <bool Real>
 B2A_NOINLINE void EvaluatePair(const SuperellipseTerms& ta, const SuperellipseTerms& tb, const Pose& rel, Vec2 x, PairDerivatives& e)
 {
@@ -125,7 +125,7 @@ bool NewtonOnRawLevels(const SuperellipseTerms& ta, const SuperellipseTerms& tb,
 		const BorderedAdjugate adjugate = AdjugateOfBordered(hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA);
 		if (it == 1 ? !BorderedStepUsable(BorderedRcond(adjugate, hxx, hxy, hyy, e.gB.x, e.gB.y, dxA, dyA), hxx, hxy, hyy, e.gB.x,
 		                                  e.gB.y, dxA, dyA)
-		            : (!(std::fabs(adjugate.det) > 0.0) || !std::isfinite(1.0 / adjugate.det)))
+		            : !AdjugateInvertible(adjugate))
 			return false;
 		double delta[3];
 		ApplyAdjugate(adjugate, minusR, delta);

@@ -113,6 +113,10 @@ inline double BorderedRcond(const BorderedAdjugate& a, double h11, double h12, d
 	return rcond;
 }
 
+/// Whether ApplyAdjugate may divide by a's determinant: nonzero, and its reciprocal finite
+/// (SolveBorderedSolution's test; SolveBordered asks for BorderedRcond as well).
+inline bool AdjugateInvertible(const BorderedAdjugate& a) { return std::fabs(a.det) > 0.0 && std::isfinite(1.0 / a.det); }
+
 /// Solve3 for the bordered symmetric matrix of BorderedAdjugate: the same adjugate, solution and
 /// exact rcond, with the zero and the symmetry written out (about half the operations).
 inline Solve3Result SolveBordered(double h11, double h12, double h22, double g1, double g2, double d1, double d2,
@@ -135,7 +139,7 @@ inline bool SolveBorderedSolution(double h11, double h12, double h22, double g1,
                                   const double r[3], double x[3])
 {
 	const BorderedAdjugate a = AdjugateOfBordered(h11, h12, h22, g1, g2, d1, d2);
-	if (!(std::fabs(a.det) > 0.0) || !std::isfinite(1.0 / a.det))
+	if (!AdjugateInvertible(a))
 		return false;
 	ApplyAdjugate(a, r, x);
 	return true;
