@@ -2,6 +2,7 @@
 #include "box2d/AnalyticContact.h"
 
 #include "box2d/AnalyticProxyShape.h"
+#include "numerics/CodeLayout.h"
 
 #include "b2analytic/AnalyticFixture.h"
 
@@ -275,9 +276,7 @@ inline double AnalyticContact::HoldGap() const
 
 // (Forced inline: GCC keeps it out of line, and its call then takes the poses through memory at
 // every evaluation.)
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
+B2A_FORCE_INLINE
 inline bool AnalyticContact::PairApart(const Pose& poseA, const Pose& poseB)
 {
 	// Bounding circles apart: no contact, and no solve. The tight AABBs of the broad phase

@@ -2,6 +2,7 @@
 #include "contact/SolverCore.h"
 
 #include "b2analytic/SuperellipseShape.h"
+#include "numerics/CodeLayout.h"
 #include "numerics/RootFinding.h"
 #include "numerics/SmallLinear.h"
 
@@ -43,9 +44,7 @@ Vec2 TwoDifferenceLow(Vec2 p, Vec2 q, Vec2 hi)
 // D' = tr(adj(H)·G), D'' = 2 det G (D is quadratic in s); Newton's on Q where Halley's is not to
 // be trusted either, and on h where Q falls no more. Out of line: its code inlined in the loop
 // made every warm contact dearer, though a warm start seldom takes it.
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
+B2A_NOINLINE
 double QuarticStep(const Sym22& H, const Sym22& G, double inv, double h, double slope, double q)
 {
 	const double ddet = (G.xx * H.yy + H.xx * G.yy - 2.0 * H.xy * G.xy) * inv; // D'/D
@@ -99,9 +98,7 @@ bool LineRule(Vec2 X, Vec2 dir, double A, double B, double level, Radial radial,
 // tenth of a decade, which saves Halley's steps. Along a body's own axes h is a semi-axis, so the
 // five take six square roots. Out of line: inlined into the solver it made every ellipse contact
 // dearer, warm ones and rounder pairs that never call it included.
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
+B2A_NOINLINE
 double SupportStart(const SuperellipseShape& a, const Pose& pa, const SuperellipseShape& b, const Pose& pb, Vec2 rc)
 {
 	const double aA = a.A(), bA = a.B(), aB = b.A(), bB = b.B();
@@ -137,9 +134,7 @@ struct PowerOfTwo
 // The power of two σ with σ·x in [1, 2) for a positive normal x, and its inverse, both normal
 // (the exponent clamped to ±1022: zero and NaN give 2^1022, infinities 2^−1022, and the solve
 // then fails on its own tests).
-#if defined(__GNUC__)
-__attribute__((noinline)) // (a call, so that the caller branches around it: see SolveEllipsePairLevel)
-#endif
+B2A_NOINLINE // (a call, so that the caller branches around it: see SolveEllipsePairLevel)
 PowerOfTwo PowerOfTwoInto12(double x)
 {
 	const int e = std::clamp(std::ilogb(x), -1022, 1022);

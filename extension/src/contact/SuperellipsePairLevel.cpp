@@ -4,6 +4,7 @@
 
 #include "b2analytic/SuperellipseShape.h"
 #include "geometry/SuperellipseTerms.h"
+#include "numerics/CodeLayout.h"
 #include "numerics/SmallLinear.h"
 
 #include <algorithm>
@@ -294,7 +295,7 @@ struct Point
 	double relativeSquared; // NaN where anything evaluated was not finite
 };
 
-__attribute__((always_inline)) inline void EvaluateAt(const PairInA& p, Point& q, Vec2 xi, double mu)
+B2A_FORCE_INLINE inline void EvaluateAt(const PairInA& p, Point& q, Vec2 xi, double mu)
 {
 	q.xi = xi;
 	q.mu = mu;

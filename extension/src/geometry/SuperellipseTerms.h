@@ -2,6 +2,7 @@
 #pragma once
 
 #include "b2analytic/SuperellipseShape.h"
+#include "numerics/CodeLayout.h"
 #include "numerics/Powers.h"
 
 #include <algorithm>
@@ -299,9 +300,7 @@ struct SmoothCrossing
 	enum class State { running, found, failed };
 
 	/// Starts at t = 0 with g, g', g'' from `known`.
-#if defined(__GNUC__)
-	__attribute__((always_inline))
-#endif
+	B2A_FORCE_INLINE
 	SmoothCrossing(const SuperellipseTerms& s, Vec2 x, Vec2 d, const double known[3], double unit)
 	    : X(x.x * s.invA), Y(x.y * s.invB), D(d.x * s.invA), E(d.y * s.invB), nD(s.n * D), mE(s.m * E),
 	      nnDD(s.n * (s.n - 1.0) * D * D), mmEE(s.m * (s.m - 1.0) * E * E), g(known[0] - 1.0), g1(known[1]), g2(known[2]),
@@ -312,9 +311,7 @@ struct SmoothCrossing
 	/// One Halley step, and the derivatives at its end unless it ended the search. (It and the
 	/// constructor are forced inline: GCC keeps them out of line for their two call sites, and
 	/// the crossing's state then goes through memory on every step.)
-#if defined(__GNUC__)
-	__attribute__((always_inline))
-#endif
+	B2A_FORCE_INLINE
 	void Step()
 	{
 		if (!(g1 > 0.0))

@@ -11,7 +11,10 @@
 /// Never inlined and laid out with the cold code: a rare fallback (its callers' branches to it
 /// are taken as unlikely).
 #define B2A_COLD __attribute__((noinline, cold))
+/// Always inlined: a small step whose state would otherwise pass through memory at every call.
+#define B2A_FORCE_INLINE __attribute__((always_inline))
 #else
 #define B2A_NOINLINE
 #define B2A_COLD
+#define B2A_FORCE_INLINE
 #endif
