@@ -51,8 +51,8 @@ bool OneSideHolds(const Shape& p, const Pose& pp, const LevelResult& level, cons
 // seen from Q where `flip`; false where the solve failed. (One out-of-line function for both
 // sides: inlined at each call, the solve would be in GridContact's code twice, and the heart
 // contact's code already exceeds the instruction cache.)
-B2A_NOINLINE bool SolveSide(const Shape& p, const Pose& pp, const Shape& q, const Pose& pq, const SolverOptions& options, bool flip,
-               LevelResult& level, ContactResult& contact, Vec2& gradient)
+B2A_NOINLINE bool SolveSide(const Shape& p, const Pose& pp, const Shape& q, const Pose& pq, const SolverOptions& options,
+                            bool flip, LevelResult& level, ContactResult& contact, Vec2& gradient)
 {
 	level = SolveGridScale(p, pp, q, pq, options, std::numeric_limits<double>::quiet_NaN(), &gradient);
 	if (!level.Ok())

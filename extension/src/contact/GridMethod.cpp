@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -310,9 +311,8 @@ B2A_NOINLINE void NewtonBesideKink(const SurfaceWalk& walk, Vec2 pl, Vec2 ph, do
 // RefineCandidate's last resorts, where Newton failed from both starts (seldom): A's corner rays
 // crossing the bracket, else the bracketing search.
 template <typename SamplePoint, typename MarkSolved>
-B2A_COLD void RefineWithoutNewton(const SurfaceWalk& walk, const SurfaceSamples& samples, int k,
-                                       const SamplePoint& samplePoint, const MarkSolved& markSolved, Vec2 pl, Vec2 ph,
-                                       double reach, double& value, Vec2& point)
+B2A_COLD void RefineWithoutNewton(const SurfaceWalk& walk, const SurfaceSamples& samples, int k, const SamplePoint& samplePoint,
+                                  const MarkSolved& markSolved, Vec2 pl, Vec2 ph, double reach, double& value, Vec2& point)
 {
 	const int n = samples.Count();
 	// A's corner rays: the crossing in each of the two sample segments beside the sample that
@@ -722,7 +722,7 @@ void GridScan::Scan()
 		for (int g = 0; g < runs; ++g)
 			AddToOrder(g, best, orderCount);
 	}
-	SortFew(order, order + orderCount, [](const std::pair<double, int>& x, const std::pair<double, int>& y) { return x < y; });
+	SortFew(order, order + orderCount, std::less<>());
 	for (int i = 0; i < orderCount; ++i)
 	{
 		const auto [runBound, g] = order[i];
@@ -781,7 +781,7 @@ void GridScan::CollectMinima()
 		Consider(n - 1, n - 2, 0);
 	}
 	if (bounded)
-		SortFew(scannedRuns, scannedRuns + scannedCount, [](int x, int y) { return x < y; });
+		SortFew(scannedRuns, scannedRuns + scannedCount, std::less<>());
 	for (int r = 0; r < scannedCount && ok && bounded; ++r)
 	{
 		const int g = scannedRuns[r];

@@ -222,8 +222,8 @@ Vec2 PartNormal(const Shape& outer, Vec2 g, const Shape& inner, Vec2 gi)
 // body to outer's), into *part; false where it is not refined to one. Out of line: the call is
 // taken by some parts, not by every search, whose loops it would otherwise spread over more of
 // the instruction cache.
-B2A_NOINLINE bool RefinePart(const Shape& outer, const Pose& po, const Shape& inner, const Pose& rel, bool outerIsA, const SurfaceSamples& samples,
-                int deepest, OverlapPart* part)
+B2A_NOINLINE bool RefinePart(const Shape& outer, const Pose& po, const Shape& inner, const Pose& rel, bool outerIsA,
+                             const SurfaceSamples& samples, int deepest, OverlapPart* part)
 {
 	const double surface = outer.SurfaceLevel();
 	double lo, hi;

@@ -391,8 +391,8 @@ inline bool SmoothFarCrossingFrom(const SuperellipseTerms& s, Vec2 x, Vec2 d, do
 /// as when run alone.
 /// One copy of the step serves both (a loop over the pair, not unrolled): a warm contact runs this
 /// once among much other code, and two inlined copies of the step would take twice the
-/// instruction cache lines it needs there. The two chains still overlap in the processor (a step's division
-/// and evaluation wait on its own crossing only).
+/// instruction cache lines it needs there. The two chains still overlap in the processor (a
+/// step's division and evaluation wait on its own crossing only).
 inline void SmoothFarCrossings(SmoothCrossing& a, SmoothCrossing& b)
 {
 	using State = SmoothCrossing::State;
