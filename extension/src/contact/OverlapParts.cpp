@@ -370,7 +370,7 @@ int OverlapParts(const Shape& outer, const Pose& po, const Shape& inner, const P
 			const double before = j > 0 ? (index[j - 1] == index[j] - 1 ? level[j - 1] : infinity) : (wraps ? level[m - 1] : infinity);
 			const double after = j + 1 < m ? (index[j + 1] == index[j] + 1 ? level[j + 1] : infinity) : (wraps ? level[0] : infinity);
 			minima[candidates] = index[j];
-			candidates += (here <= before) & (here < after) ? 1 : 0;
+			candidates += int(here <= before) & int(here < after);
 		};
 		int split = 0; // the inside places at or before `start` come last
 		while (split < insideCount && insidePlaces[split] < first)
